@@ -1,0 +1,359 @@
+// Copyright (c) 2026 CGAL Conformal Remeshing contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Quality measures of a triangle mesh (angles, equiangle skewness, aspect ratio, edge lengths,
+// valences) and its geometric fidelity to a reference mesh (Hausdorff distance both ways,
+// area ratio, self-intersection).
+
+#ifndef CGAL_CONFORMAL_REMESHING_MESH_QUALITY_H
+#define CGAL_CONFORMAL_REMESHING_MESH_QUALITY_H
+
+#include <CGAL/Conformal_remeshing/Error.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/Polygon_mesh_processing/distance.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace Conformal_remeshing {
+
+/// \ingroup PkgConformalRemeshingRef
+/// A histogram with bins of equal width starting at `lower`: bin `i` counts the values in
+/// `[lower + i*bin_width, lower + (i+1)*bin_width)`; the last bin also takes its upper bound.
+struct Histogram
+{
+  double lower = 0.;
+  double bin_width = 1.;
+  std::vector<std::size_t> counts;
+
+  Histogram() = default;
+  Histogram(double lower, double upper, std::size_t nb_bins)
+    : lower(lower), bin_width((upper - lower) / double(nb_bins)), counts(nb_bins, 0)
+  {}
+
+  void add(double value)
+  {
+    if(counts.empty() || !std::isfinite(value))
+      return;
+    const double position = (value - lower) / bin_width;
+    const std::size_t last = counts.size() - 1;
+    const std::size_t bin = position <= 0. ? 0 : (std::min)(static_cast<std::size_t>(position), last);
+    ++counts[bin];
+  }
+
+  std::size_t total() const
+  {
+    std::size_t n = 0;
+    for(std::size_t c : counts)
+      n += c;
+    return n;
+  }
+};
+
+/// \ingroup PkgConformalRemeshingRef
+/// Minimum, maximum and mean of a quantity over a mesh.
+struct Statistics
+{
+  double min = std::numeric_limits<double>::quiet_NaN();
+  double max = std::numeric_limits<double>::quiet_NaN();
+  double mean = std::numeric_limits<double>::quiet_NaN();
+};
+
+/// \ingroup PkgConformalRemeshingRef
+/// The quality measures of a triangle mesh, with the definitions of the package's design notes:
+/// - angles in degrees, measured with the numerically stable `atan2(|u x v|, u . v)`;
+/// - equiangle skewness (Fluent): `max((t_max - 60) / 120, (60 - t_min) / 60)`, 0 for an
+///   equilateral triangle, 1 for a degenerate one;
+/// - aspect ratio (Verdict): `L_max (L_0 + L_1 + L_2) / (4 sqrt(3) Area)`, 1 for an equilateral
+///   triangle, infinite for a degenerate one.
+struct Mesh_quality_report
+{
+  std::size_t number_of_vertices = 0;
+  std::size_t number_of_edges = 0;
+  std::size_t number_of_faces = 0;
+
+  /// every corner angle, 1 degree bins over [0, 180]
+  Histogram angle_histogram{0., 180., 180};
+  /// the smallest angle of each triangle, 1 degree bins over [0, 60]
+  Histogram minimum_angle_histogram{0., 60., 60};
+  /// statistics of the smallest angle of each triangle (`minimum_angle.min` is the smallest
+  /// angle of the mesh)
+  Statistics minimum_angle;
+  /// statistics of the largest angle of each triangle (`maximum_angle.max` is the largest
+  /// angle of the mesh)
+  Statistics maximum_angle;
+
+  /// thresholds (degrees) for `share_below`
+  static constexpr std::array<double, 4> angle_thresholds{{10., 20., 25., 30.}};
+  /// `share_below[i]`: the fraction of triangles whose minimum angle is below `angle_thresholds[i]`
+  std::array<double, 4> share_below{{0., 0., 0., 0.}};
+
+  /// equiangle skewness per triangle, 50 bins over [0, 1]
+  Histogram skewness_histogram{0., 1., 50};
+  Statistics skewness;
+  /// Verdict aspect ratio per triangle (infinite for zero-area triangles, which are counted in
+  /// `number_of_degenerate_faces` and left out of the mean)
+  Statistics aspect_ratio;
+  std::size_t number_of_degenerate_faces = 0;
+
+  Statistics edge_length;
+  /// the median edge length
+  double median_edge_length = std::numeric_limits<double>::quiet_NaN();
+
+  /// `valence_histogram[k]`: the number of vertices with `k` incident edges
+  std::vector<std::size_t> valence_histogram;
+
+  /// the fraction of triangles whose minimum angle is below `threshold_degrees`
+  /// (one of `angle_thresholds`)
+  double share_with_minimum_angle_below(double threshold_degrees) const
+  {
+    for(std::size_t i = 0; i < angle_thresholds.size(); ++i)
+      if(angle_thresholds[i] == threshold_degrees)
+        return share_below[i];
+    throw Error(Error_code::INVALID_INPUT, "no share is kept for this angle threshold");
+  }
+};
+
+/// \ingroup PkgConformalRemeshingRef
+/// The angles (degrees), equiangle skewness and aspect ratio of one triangle.
+struct Triangle_quality
+{
+  std::array<double, 3> angles;
+  double skewness;
+  double aspect_ratio;
+};
+
+/// \ingroup PkgConformalRemeshingRef
+/// Quality of the triangle `(p, q, r)`, with the definitions of `Mesh_quality_report`.
+template <typename Point_3>
+Triangle_quality triangle_quality(const Point_3& p, const Point_3& q, const Point_3& r)
+{
+  const std::array<std::array<double, 3>, 3> corners{{
+    {{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}},
+    {{CGAL::to_double(q.x()), CGAL::to_double(q.y()), CGAL::to_double(q.z())}},
+    {{CGAL::to_double(r.x()), CGAL::to_double(r.y()), CGAL::to_double(r.z())}}}};
+
+  Triangle_quality result;
+  std::array<double, 3> lengths;
+  double twice_area = 0.;
+  for(int i = 0; i < 3; ++i)
+  {
+    const auto& a = corners[i];
+    const auto& b = corners[(i + 1) % 3];
+    const auto& c = corners[(i + 2) % 3];
+    const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+    const double v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    const double cross[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};
+    const double sine = std::sqrt(cross[0] * cross[0] + cross[1] * cross[1] + cross[2] * cross[2]);
+    const double cosine = u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+    result.angles[i] = std::atan2(sine, cosine) * 180. / CGAL_PI;
+    lengths[i] = std::sqrt(u[0] * u[0] + u[1] * u[1] + u[2] * u[2]);
+    twice_area = (std::max)(twice_area, sine); // the three cross products agree up to rounding
+  }
+  // Zero-length edges make atan2 return 0 for every angle; a degenerate triangle has 0, 0, 180.
+  const double smallest = *std::min_element(result.angles.begin(), result.angles.end());
+  const double largest = (twice_area == 0.) ? 180. : *std::max_element(result.angles.begin(), result.angles.end());
+  if(twice_area == 0.)
+    result.angles = {{0., 0., 180.}};
+  result.skewness = (std::max)((largest - 60.) / 120., (60. - smallest) / 60.);
+  const double longest = *std::max_element(lengths.begin(), lengths.end());
+  result.aspect_ratio = (twice_area == 0.)
+                        ? std::numeric_limits<double>::infinity()
+                        : longest * (lengths[0] + lengths[1] + lengths[2]) / (4. * std::sqrt(3.) * 0.5 * twice_area);
+  return result;
+}
+
+/// \ingroup PkgConformalRemeshingRef
+/// Computes the quality measures of a triangle mesh.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph`, `EdgeListGraph` and `VertexListGraph`
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{a property map associating points to the vertices of `mesh`}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, mesh)`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \throws Error with `Error_code::INVALID_INPUT` if `mesh` has a face that is not a triangle.
+template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
+Mesh_quality_report mesh_quality(const TriangleMesh& mesh,
+                                 const NamedParameters& np = parameters::default_values())
+{
+  auto vpm = parameters::choose_parameter(parameters::get_parameter(np, internal_np::vertex_point),
+                                          get_const_property_map(vertex_point, mesh));
+  if(!is_triangle_mesh(mesh))
+    throw Error(Error_code::INVALID_INPUT, "mesh_quality() needs a triangle mesh; triangulate the faces first");
+
+  Mesh_quality_report report;
+  report.number_of_vertices = num_vertices(mesh);
+  report.number_of_edges = num_edges(mesh);
+  report.number_of_faces = num_faces(mesh);
+
+  // Running minimum, maximum and sum of one per-triangle quantity.
+  struct Accumulator
+  {
+    double min = std::numeric_limits<double>::infinity(), max = -std::numeric_limits<double>::infinity(), sum = 0.;
+    std::size_t n = 0;
+    void add(double x) { min = (std::min)(min, x); max = (std::max)(max, x); if(std::isfinite(x)) { sum += x; ++n; } }
+    Statistics statistics() const
+    {
+      return n == 0 ? Statistics{min, max, std::numeric_limits<double>::quiet_NaN()} : Statistics{min, max, sum / double(n)};
+    }
+  };
+  Accumulator smallest_angles, largest_angles, skewnesses, aspect_ratios;
+  std::array<std::size_t, 4> below{{0, 0, 0, 0}};
+  for(auto f : faces(mesh))
+  {
+    const auto h = halfedge(f, mesh);
+    const Triangle_quality t = triangle_quality(get(vpm, source(h, mesh)), get(vpm, target(h, mesh)),
+                                                get(vpm, target(next(h, mesh), mesh)));
+    const double smallest = *std::min_element(t.angles.begin(), t.angles.end());
+    const double largest = *std::max_element(t.angles.begin(), t.angles.end());
+    for(double a : t.angles)
+      report.angle_histogram.add(a);
+    report.minimum_angle_histogram.add(smallest);
+    smallest_angles.add(smallest);
+    largest_angles.add(largest);
+    for(std::size_t i = 0; i < below.size(); ++i)
+      if(smallest < Mesh_quality_report::angle_thresholds[i])
+        ++below[i];
+
+    report.skewness_histogram.add(t.skewness);
+    skewnesses.add(t.skewness);
+    aspect_ratios.add(t.aspect_ratio);
+    if(!std::isfinite(t.aspect_ratio))
+      ++report.number_of_degenerate_faces;
+  }
+
+  if(report.number_of_faces > 0)
+  {
+    report.minimum_angle = smallest_angles.statistics();
+    report.maximum_angle = largest_angles.statistics();
+    for(std::size_t i = 0; i < below.size(); ++i)
+      report.share_below[i] = double(below[i]) / double(report.number_of_faces);
+    report.skewness = skewnesses.statistics();
+    report.aspect_ratio = aspect_ratios.statistics();
+  }
+
+  std::vector<double> lengths;
+  lengths.reserve(num_edges(mesh));
+  for(auto e : edges(mesh))
+  {
+    const auto h = halfedge(e, mesh);
+    lengths.push_back(std::sqrt(CGAL::to_double(CGAL::squared_distance(get(vpm, source(h, mesh)),
+                                                                      get(vpm, target(h, mesh))))));
+  }
+  if(!lengths.empty())
+  {
+    double sum = 0.;
+    for(double l : lengths)
+      sum += l;
+    std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());
+    report.median_edge_length = lengths[lengths.size() / 2];
+    report.edge_length = Statistics{*std::min_element(lengths.begin(), lengths.end()),
+                                    *std::max_element(lengths.begin(), lengths.end()),
+                                    sum / double(lengths.size())};
+  }
+
+  for(auto v : vertices(mesh))
+  {
+    const std::size_t valence = degree(v, mesh);
+    if(report.valence_histogram.size() <= valence)
+      report.valence_histogram.resize(valence + 1, 0);
+    ++report.valence_histogram[valence];
+  }
+  return report;
+}
+
+/// \ingroup PkgConformalRemeshingRef
+/// How faithfully a mesh reproduces a reference surface.
+struct Reference_comparison
+{
+  /// the length of the reference's bounding-box diagonal, the unit of the relative distances
+  double reference_diagonal = 0.;
+  /// approximate Hausdorff distance from the mesh to the reference, over `reference_diagonal`
+  double relative_distance_to_reference = 0.;
+  /// approximate Hausdorff distance from the reference to the mesh, over `reference_diagonal`
+  double relative_distance_from_reference = 0.;
+  /// area of the mesh over area of the reference
+  double area_ratio = 0.;
+  /// whether the mesh (not the reference) has intersecting faces, by exact predicates
+  bool self_intersects = false;
+
+  /// the larger of the two one-sided relative distances
+  double relative_hausdorff_distance() const
+  {
+    return (std::max)(relative_distance_to_reference, relative_distance_from_reference);
+  }
+};
+
+/// \ingroup PkgConformalRemeshingRef
+/// Compares a triangle mesh with a reference triangle mesh: approximate Hausdorff distance
+/// both ways (`CGAL::Polygon_mesh_processing::approximate_Hausdorff_distance()`, relative to the
+/// reference's bounding-box diagonal), the ratio of their areas, and whether the mesh
+/// self-intersects (`CGAL::Polygon_mesh_processing::does_self_intersect()`).
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{number_of_points_on_faces}
+///     \cgalParamDescription{the number of random points sampled on the faces of each mesh, on
+///                           top of its vertices and points on its edges}
+///     \cgalParamDefault{`max(100000, 4 * num_faces)` of the sampled mesh}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{random_seed}
+///     \cgalParamDescription{the seed of the sampling, for reproducible results}
+///     \cgalParamDefault{`0`}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \throws Error with `Error_code::INVALID_INPUT` if a mesh is empty or not a triangle mesh.
+template <typename Concurrency_tag = CGAL::Parallel_if_available_tag, typename TriangleMesh,
+          typename NamedParameters = parameters::Default_named_parameters>
+Reference_comparison compare_to_reference(const TriangleMesh& mesh, const TriangleMesh& reference,
+                                          const NamedParameters& np = parameters::default_values())
+{
+  for(const TriangleMesh* m : {&mesh, &reference})
+    if(is_empty(*m) || faces(*m).empty() || !is_triangle_mesh(*m))
+      throw Error(Error_code::INVALID_INPUT, "compare_to_reference() needs two non-empty triangle meshes");
+
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  const unsigned int seed = parameters::choose_parameter(parameters::get_parameter(np, internal_np::random_seed), 0u);
+  auto samples_on = [&](const TriangleMesh& m) {
+    const std::size_t fallback = (std::max<std::size_t>)(100000, 4 * num_faces(m));
+    return parameters::choose_parameter(parameters::get_parameter(np, internal_np::number_of_points_on_faces), fallback);
+  };
+
+  Reference_comparison result;
+  const CGAL::Bbox_3 box = PMP::bbox(reference);
+  result.reference_diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin())
+                                        + CGAL::square(box.zmax() - box.zmin()));
+  const double unit = result.reference_diagonal > 0. ? result.reference_diagonal : 1.;
+  result.relative_distance_to_reference =
+    PMP::approximate_Hausdorff_distance<Concurrency_tag>(
+      mesh, reference, parameters::number_of_points_on_faces(samples_on(mesh)).random_seed(seed)) / unit;
+  result.relative_distance_from_reference =
+    PMP::approximate_Hausdorff_distance<Concurrency_tag>(
+      reference, mesh, parameters::number_of_points_on_faces(samples_on(reference)).random_seed(seed)) / unit;
+  const double reference_area = CGAL::to_double(PMP::area(reference));
+  result.area_ratio = reference_area > 0. ? CGAL::to_double(PMP::area(mesh)) / reference_area
+                                          : std::numeric_limits<double>::infinity();
+  result.self_intersects = PMP::does_self_intersect<Concurrency_tag>(mesh);
+  return result;
+}
+
+} // namespace Conformal_remeshing
+} // namespace CGAL
+
+#endif // CGAL_CONFORMAL_REMESHING_MESH_QUALITY_H

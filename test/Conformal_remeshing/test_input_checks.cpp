@@ -1,0 +1,364 @@
+// Tests of the input checks (check_polygon_soup, check_mesh) and of the readers.
+
+#include <CGAL/Conformal_remeshing/IO/read_mesh.h>
+#include <CGAL/Conformal_remeshing/check_mesh.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/IO/polygon_soup_io.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/generators.h>
+
+#include <gtest/gtest.h>
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace CR = CGAL::Conformal_remeshing;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef K::Point_3 Point;
+typedef CGAL::Surface_mesh<Point> Mesh;
+typedef std::vector<std::vector<std::size_t> > Polygons;
+
+namespace {
+
+// A closed, outward-oriented tetrahedron.
+std::vector<Point> tetrahedron_points()
+{
+  return {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1)};
+}
+Polygons tetrahedron_faces() { return {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}}; }
+
+CR::Mesh_check_report check(const std::vector<Point>& points, const Polygons& polygons)
+{
+  return CR::check_polygon_soup<K>(points, polygons);
+}
+
+// Expects `report` to hold exactly the defect `d`, `count` times.
+void expect_only(const CR::Mesh_check_report& report, CR::Mesh_defect d, std::size_t count)
+{
+  ASSERT_EQ(report.defects.size(), 1u) << report.summary();
+  EXPECT_EQ(report.defects[0].defect, d) << report.summary();
+  EXPECT_EQ(report.defects[0].count, count) << report.summary();
+  EXPECT_FALSE(report.defects[0].example.empty());
+  EXPECT_FALSE(report.is_valid());
+  EXPECT_NE(report.summary().find(CR::defect_name(d, count)), std::string::npos) << report.summary();
+}
+
+std::filesystem::path scratch_dir()
+{
+  const std::filesystem::path dir = std::filesystem::temp_directory_path() / "conformal_remeshing_test_input_checks";
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+void write_text(const std::filesystem::path& path, const std::string& text)
+{
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+}
+
+} // namespace
+
+TEST(SoupChecks, ValidTetrahedron)
+{
+  const CR::Mesh_check_report r = check(tetrahedron_points(), tetrahedron_faces());
+  EXPECT_TRUE(r.is_valid()) << r.summary();
+  EXPECT_EQ(r.summary(), "valid");
+  EXPECT_EQ(r.number_of_vertices, 4u);
+  EXPECT_EQ(r.number_of_faces, 4u);
+}
+
+TEST(SoupChecks, EmptyMesh)
+{
+  expect_only(check({}, {}), CR::Mesh_defect::EMPTY_MESH, 1);
+}
+
+TEST(SoupChecks, NonFiniteCoordinates)
+{
+  std::vector<Point> points = tetrahedron_points();
+  points[2] = Point(0, std::numeric_limits<double>::quiet_NaN(), 0);
+  points[3] = Point(0, 0, std::numeric_limits<double>::infinity());
+  expect_only(check(points, tetrahedron_faces()), CR::Mesh_defect::NON_FINITE_COORDINATES, 2);
+}
+
+TEST(SoupChecks, InvalidVertexIndex)
+{
+  Polygons faces = tetrahedron_faces();
+  faces[1][2] = 7;
+  const CR::Mesh_check_report r = check(tetrahedron_points(), faces);
+  EXPECT_EQ(r.count(CR::Mesh_defect::INVALID_VERTEX_INDEX), 1u) << r.summary();
+  EXPECT_NE(r.summary().find("refers to vertex 7"), std::string::npos) << r.summary();
+}
+
+TEST(SoupChecks, NonTriangleFaces)
+{
+  // A closed cube made of six quads: manifold and oriented, only the face size is wrong.
+  const std::vector<Point> points = {Point(0, 0, 0), Point(1, 0, 0), Point(1, 1, 0), Point(0, 1, 0),
+                                     Point(0, 0, 1), Point(1, 0, 1), Point(1, 1, 1), Point(0, 1, 1)};
+  const Polygons quads = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4}, {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+  expect_only(check(points, quads), CR::Mesh_defect::NON_TRIANGLE_FACE, 6);
+}
+
+TEST(SoupChecks, DegenerateFaceByExactPredicate)
+{
+  // A flat tetrahedron whose face (0, 1, 2) has three exactly collinear vertices.
+  const std::vector<Point> points = {Point(0, 0, 0), Point(1, 0, 0), Point(2, 0, 0), Point(0, 1, 0)};
+  expect_only(check(points, {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}}), CR::Mesh_defect::DEGENERATE_FACE, 1);
+
+  // Nearly collinear is not collinear: exact predicates tell the difference.
+  const std::vector<Point> almost = {Point(0, 0, 0), Point(1, 1e-300, 0), Point(2, 0, 0), Point(0, 1, 0)};
+  EXPECT_EQ(check(almost, {{0, 2, 1}, {0, 1, 3}, {1, 2, 3}, {0, 3, 2}}).count(CR::Mesh_defect::DEGENERATE_FACE), 0u);
+}
+
+TEST(SoupChecks, RepeatedVertexInFace)
+{
+  const CR::Mesh_check_report r = check(tetrahedron_points(), {{0, 1, 1}});
+  EXPECT_EQ(r.count(CR::Mesh_defect::DEGENERATE_FACE), 1u) << r.summary();
+  EXPECT_NE(r.summary().find("repeats a vertex"), std::string::npos) << r.summary();
+}
+
+TEST(SoupChecks, DuplicatedVertices)
+{
+  // Two triangles of a square with the shared diagonal's vertices duplicated: a crack.
+  const std::vector<Point> points = {Point(0, 0, 0), Point(1, 0, 0), Point(1, 1, 0),
+                                     Point(0, 0, 0), Point(1, 1, 0), Point(0, 1, 0)};
+  expect_only(check(points, {{0, 1, 2}, {3, 4, 5}}), CR::Mesh_defect::DUPLICATED_VERTEX, 2);
+}
+
+TEST(SoupChecks, IsolatedVertex)
+{
+  std::vector<Point> points = tetrahedron_points();
+  points.push_back(Point(5, 5, 5));
+  const CR::Mesh_check_report r = check(points, tetrahedron_faces());
+  expect_only(r, CR::Mesh_defect::ISOLATED_VERTEX, 1);
+  EXPECT_NE(r.summary().find("vertex 4"), std::string::npos);
+}
+
+TEST(SoupChecks, NonManifoldEdge)
+{
+  // Three triangles around the edge 0-1.
+  const std::vector<Point> points = {Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, -1, 0), Point(0, 0, 1)};
+  const CR::Mesh_check_report r = check(points, {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}});
+  EXPECT_EQ(r.count(CR::Mesh_defect::NON_MANIFOLD_EDGE), 1u) << r.summary();
+  EXPECT_NE(r.summary().find("shared by 3 faces"), std::string::npos) << r.summary();
+}
+
+TEST(SoupChecks, NonManifoldVertex)
+{
+  // Two triangles touching at vertex 0 only (a bow tie).
+  const std::vector<Point> points = {Point(0, 0, 0), Point(1, 0, 0), Point(1, 1, 0), Point(-1, 0, 0), Point(-1, -1, 0)};
+  const CR::Mesh_check_report r = check(points, {{0, 1, 2}, {0, 3, 4}});
+  expect_only(r, CR::Mesh_defect::NON_MANIFOLD_VERTEX, 1);
+  EXPECT_NE(r.summary().find("vertex 0 joins 2"), std::string::npos) << r.summary();
+
+  // The same two triangles joined by a third one across vertex 0 form a single fan.
+  const CR::Mesh_check_report joined = check(points, {{0, 1, 2}, {0, 3, 4}, {0, 2, 3}});
+  EXPECT_TRUE(joined.is_valid()) << joined.summary();
+}
+
+TEST(SoupChecks, InconsistentOrientation)
+{
+  Polygons faces = tetrahedron_faces();
+  std::swap(faces[2][0], faces[2][1]); // flip one face of a closed surface: its 3 edges disagree
+  expect_only(check(tetrahedron_points(), faces), CR::Mesh_defect::INCONSISTENT_ORIENTATION, 3);
+}
+
+TEST(SoupChecks, MoebiusStripIsNonOrientable)
+{
+  // A strip of n quads (two triangles each) whose ends are glued with a half twist.
+  const int n = 12;
+  std::vector<Point> points;
+  for(int i = 0; i < n; ++i)
+  {
+    const double t = 2 * CGAL_PI * i / n;
+    for(int side : {-1, 1})
+    {
+      const double s = 0.3 * side;
+      points.emplace_back((1 + s * std::cos(t / 2)) * std::cos(t), (1 + s * std::cos(t / 2)) * std::sin(t), s * std::sin(t / 2));
+    }
+  }
+  Polygons faces;
+  for(int i = 0; i < n; ++i)
+  {
+    const std::size_t a = 2 * i, b = 2 * i + 1;
+    // After a full turn the two sides are swapped.
+    const std::size_t c = (i + 1 < n) ? 2 * (i + 1) : 1;
+    const std::size_t d = (i + 1 < n) ? 2 * (i + 1) + 1 : 0;
+    faces.push_back({a, c, b});
+    faces.push_back({b, c, d});
+  }
+  const CR::Mesh_check_report r = check(points, faces);
+  expect_only(r, CR::Mesh_defect::NON_ORIENTABLE, 1);
+
+  // Without the twist, the same construction is an orientable annulus.
+  Polygons annulus;
+  for(int i = 0; i < n; ++i)
+  {
+    const std::size_t a = 2 * i, b = 2 * i + 1, c = 2 * ((i + 1) % n), d = 2 * ((i + 1) % n) + 1;
+    annulus.push_back({a, c, b});
+    annulus.push_back({b, c, d});
+  }
+  EXPECT_TRUE(check(points, annulus).is_valid()) << check(points, annulus).summary();
+}
+
+TEST(MeshChecks, TopologyOfTorusAndDisc)
+{
+  // A torus from a grid: genus 1, closed.
+  Mesh torus;
+  const int nu = 24, nv = 12;
+  std::vector<Mesh::Vertex_index> vs;
+  for(int i = 0; i < nu; ++i)
+    for(int j = 0; j < nv; ++j)
+    {
+      const double u = 2 * CGAL_PI * i / nu, v = 2 * CGAL_PI * j / nv;
+      vs.push_back(torus.add_vertex(Point((2 + std::cos(v)) * std::cos(u), (2 + std::cos(v)) * std::sin(u), std::sin(v))));
+    }
+  auto at = [&](int i, int j) { return vs[(i % nu) * nv + (j % nv)]; };
+  for(int i = 0; i < nu; ++i)
+    for(int j = 0; j < nv; ++j)
+    {
+      torus.add_face(at(i, j), at(i + 1, j), at(i + 1, j + 1));
+      torus.add_face(at(i, j), at(i + 1, j + 1), at(i, j + 1));
+    }
+  const CR::Mesh_check_report r = CR::check_mesh(torus);
+  EXPECT_TRUE(r.is_valid()) << r.summary();
+  ASSERT_TRUE(r.topology_available);
+  ASSERT_EQ(r.components.size(), 1u);
+  EXPECT_EQ(r.components[0].euler_characteristic, 0);
+  EXPECT_EQ(r.components[0].genus, 1);
+  EXPECT_EQ(r.components[0].boundary_loops, 0u);
+  EXPECT_EQ(r.components[0].faces, std::size_t(2 * nu * nv));
+
+  // Add a separate disc (a single triangle): a second component with one boundary loop.
+  const auto a = torus.add_vertex(Point(10, 0, 0)), b = torus.add_vertex(Point(11, 0, 0)), c = torus.add_vertex(Point(10, 1, 0));
+  torus.add_face(a, b, c);
+  const CR::Mesh_check_report two = CR::check_mesh(torus);
+  ASSERT_EQ(two.components.size(), 2u);
+  EXPECT_EQ(two.total_genus(), 1);
+  EXPECT_EQ(two.total_boundary_loops(), 1u);
+}
+
+TEST(MeshChecks, DefectsInASurfaceMesh)
+{
+  Mesh mesh;
+  CGAL::make_tetrahedron(Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0), Point(0, 0, 1), mesh);
+  EXPECT_TRUE(CR::check_mesh(mesh).is_valid());
+
+  mesh.add_vertex(Point(0, 0, 0)); // isolated, and a duplicate of vertex 0
+  const CR::Mesh_check_report r = CR::check_mesh(mesh);
+  EXPECT_EQ(r.count(CR::Mesh_defect::ISOLATED_VERTEX), 1u) << r.summary();
+  EXPECT_EQ(r.count(CR::Mesh_defect::DUPLICATED_VERTEX), 1u) << r.summary();
+
+  Mesh empty;
+  EXPECT_EQ(CR::check_mesh(empty).count(CR::Mesh_defect::EMPTY_MESH), 1u);
+}
+
+// --- readers --------------------------------------------------------------------------------
+
+class Readers : public ::testing::TestWithParam<std::string> {};
+
+TEST_P(Readers, RoundTripOfEveryFormat)
+{
+  // GetParam(): "<extension>" or "<extension>-binary".
+  const std::string name = GetParam();
+  const bool binary = name.find("-binary") != std::string::npos;
+  const std::string extension = name.substr(0, name.find('-'));
+  const std::filesystem::path file = scratch_dir() / ("tetrahedron_" + name + "." + extension);
+
+  ASSERT_TRUE(CGAL::IO::write_polygon_soup(file.string(), tetrahedron_points(), tetrahedron_faces(),
+                                           CGAL::parameters::use_binary_mode(binary).stream_precision(17)));
+  Mesh mesh;
+  const CR::Mesh_check_report r = CR::read_and_check_mesh(file.string(), mesh);
+  EXPECT_TRUE(r.is_valid()) << r.summary();
+  EXPECT_EQ(mesh.number_of_vertices(), 4u);
+  EXPECT_EQ(mesh.number_of_faces(), 4u);
+  ASSERT_TRUE(r.topology_available);
+  ASSERT_EQ(r.components.size(), 1u);
+  EXPECT_EQ(r.components[0].genus, 0);
+  EXPECT_EQ(r.components[0].euler_characteristic, 2);
+}
+
+INSTANTIATE_TEST_SUITE_P(AllFormats, Readers,
+                         ::testing::Values("off", "obj", "ply", "ply-binary", "stl", "stl-binary"));
+
+TEST(Readers, StlTriangleSoupIsMergedIntoAMesh)
+{
+  // ASCII STL stores every triangle with its own three corners.
+  std::string stl = "solid tetra\n";
+  const std::vector<Point> p = tetrahedron_points();
+  for(const auto& f : tetrahedron_faces())
+  {
+    stl += "facet normal 0 0 0\nouter loop\n";
+    for(std::size_t v : f)
+      stl += "vertex " + std::to_string(p[v].x()) + " " + std::to_string(p[v].y()) + " " + std::to_string(p[v].z()) + "\n";
+    stl += "endloop\nendfacet\n";
+  }
+  stl += "endsolid tetra\n";
+  const std::filesystem::path file = scratch_dir() / "soup.stl";
+  write_text(file, stl);
+  Mesh mesh;
+  const CR::Mesh_check_report r = CR::read_and_check_mesh(file.string(), mesh);
+  EXPECT_TRUE(r.is_valid()) << r.summary();
+  EXPECT_EQ(mesh.number_of_vertices(), 4u);
+  EXPECT_EQ(r.components.at(0).genus, 0);
+  EXPECT_EQ(r.components.at(0).boundary_loops, 0u);
+}
+
+TEST(Readers, DefectiveSoupIsReportedNotBuilt)
+{
+  const std::filesystem::path file = scratch_dir() / "non_manifold_edge.off";
+  write_text(file, "OFF\n5 3 0\n0 0 0\n1 0 0\n0 1 0\n0 -1 0\n0 0 1\n3 0 1 2\n3 1 0 3\n3 0 1 4\n");
+  Mesh mesh;
+  const CR::Mesh_check_report r = CR::read_and_check_mesh(file.string(), mesh);
+  EXPECT_EQ(r.count(CR::Mesh_defect::NON_MANIFOLD_EDGE), 1u) << r.summary();
+  EXPECT_FALSE(r.topology_available);
+  EXPECT_EQ(mesh.number_of_faces(), 0u);
+}
+
+namespace {
+// Expects read_and_check_mesh to throw an Error with `code` whose message names the file
+// and contains `reason`.
+void expect_read_error(const std::filesystem::path& file, CR::Error_code code, const std::string& reason)
+{
+  Mesh mesh;
+  try
+  {
+    CR::read_and_check_mesh(file.string(), mesh);
+    ADD_FAILURE() << "no error for " << file;
+  }
+  catch(const CR::Error& e)
+  {
+    EXPECT_EQ(e.code(), code) << e.what();
+    EXPECT_NE(std::string(e.what()).find(file.string()), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find(reason), std::string::npos) << e.what();
+  }
+}
+} // namespace
+
+TEST(Readers, UnreadableFilesNameTheFileAndTheReason)
+{
+  const std::filesystem::path dir = scratch_dir();
+  expect_read_error(dir / "does_not_exist.off", CR::Error_code::FILE_NOT_READABLE, "No such file");
+  expect_read_error(dir / "mesh.xyz", CR::Error_code::UNSUPPORTED_FORMAT, "unsupported file extension '.xyz'");
+
+  write_text(dir / "empty_file.off", "");
+  expect_read_error(dir / "empty_file.off", CR::Error_code::FILE_NOT_READABLE, "empty");
+
+  const std::vector<std::pair<std::string, std::string> > garbage = {
+    {"garbage.off", "this is not a mesh\n"},
+    {"truncated.off", "OFF\n4 4 0\n0 0 0\n1 0 0\n"},
+    {"garbage.obj", "v 0 0 0\nv 1 0 0\nf 1 2 x\n"},
+    {"garbage.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nend_header\nnot numbers\n"},
+    {"truncated.stl", std::string("solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0")},
+  };
+  for(const auto& g : garbage)
+  {
+    write_text(dir / g.first, g.second);
+    expect_read_error(dir / g.first, CR::Error_code::FILE_NOT_READABLE, "not a valid");
+  }
+}

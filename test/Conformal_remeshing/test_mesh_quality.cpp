@@ -1,0 +1,180 @@
+// Tests of the quality measures against hand-computed triangles, and of the comparison with a
+// reference mesh on deliberately displaced and self-intersecting copies.
+
+#include <CGAL/Conformal_remeshing/mesh_quality.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+namespace CR = CGAL::Conformal_remeshing;
+typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
+typedef K::Point_3 Point;
+typedef CGAL::Surface_mesh<Point> Mesh;
+
+namespace {
+
+Mesh single_triangle(const Point& p, const Point& q, const Point& r)
+{
+  Mesh m;
+  m.add_face(m.add_vertex(p), m.add_vertex(q), m.add_vertex(r));
+  return m;
+}
+
+// An n x n grid of unit squares in the plane z = 0, each split into two triangles.
+Mesh grid(int n)
+{
+  Mesh m;
+  std::vector<Mesh::Vertex_index> v;
+  for(int j = 0; j <= n; ++j)
+    for(int i = 0; i <= n; ++i)
+      v.push_back(m.add_vertex(Point(i, j, 0)));
+  auto at = [&](int i, int j) { return v[j * (n + 1) + i]; };
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i)
+    {
+      m.add_face(at(i, j), at(i + 1, j), at(i + 1, j + 1));
+      m.add_face(at(i, j), at(i + 1, j + 1), at(i, j + 1));
+    }
+  return m;
+}
+
+} // namespace
+
+TEST(TriangleQuality, Equilateral)
+{
+  const CR::Triangle_quality t = CR::triangle_quality(Point(0, 0, 0), Point(1, 0, 0), Point(0.5, std::sqrt(3.) / 2, 0));
+  for(double a : t.angles)
+    EXPECT_NEAR(a, 60., 1e-12);
+  EXPECT_NEAR(t.skewness, 0., 1e-12);
+  EXPECT_NEAR(t.aspect_ratio, 1., 1e-12);
+}
+
+TEST(TriangleQuality, RightIsosceles)
+{
+  // Angles 45, 45, 90. Equiangle skewness max((90-60)/120, (60-45)/60) = 0.25. Aspect ratio:
+  // legs 1, hypotenuse sqrt(2), area 1/2: sqrt(2) (2 + sqrt(2)) / (4 sqrt(3) / 2).
+  const CR::Triangle_quality t = CR::triangle_quality(Point(0, 0, 0), Point(1, 0, 0), Point(0, 1, 0));
+  EXPECT_NEAR(t.angles[0], 90., 1e-12);
+  EXPECT_NEAR(t.angles[1], 45., 1e-12);
+  EXPECT_NEAR(t.angles[2], 45., 1e-12);
+  EXPECT_NEAR(t.skewness, 0.25, 1e-12);
+  EXPECT_NEAR(t.aspect_ratio, std::sqrt(2.) * (2 + std::sqrt(2.)) / (2 * std::sqrt(3.)), 1e-12);
+}
+
+TEST(TriangleQuality, ObtuseIsosceles)
+{
+  // Angles 30, 30, 120: skewness max(60/120, 30/60) = 0.5.
+  const CR::Triangle_quality t = CR::triangle_quality(Point(0, 0, 0), Point(2, 0, 0), Point(1, 1 / std::sqrt(3.), 0));
+  EXPECT_NEAR(t.angles[0], 30., 1e-12);
+  EXPECT_NEAR(t.angles[2], 120., 1e-12);
+  EXPECT_NEAR(t.skewness, 0.5, 1e-12);
+}
+
+TEST(TriangleQuality, DegenerateTriangle)
+{
+  const CR::Triangle_quality t = CR::triangle_quality(Point(0, 0, 0), Point(1, 0, 0), Point(3, 0, 0));
+  EXPECT_EQ(t.angles[0] + t.angles[1] + t.angles[2], 180.);
+  EXPECT_EQ(t.skewness, 1.);
+  EXPECT_TRUE(std::isinf(t.aspect_ratio));
+}
+
+TEST(MeshQuality, RightIsoscelesGrid)
+{
+  const Mesh m = grid(4);
+  const CR::Mesh_quality_report q = CR::mesh_quality(m);
+  EXPECT_EQ(q.number_of_faces, 32u);
+  EXPECT_EQ(q.number_of_vertices, 25u);
+  EXPECT_NEAR(q.minimum_angle.min, 45., 1e-12);
+  EXPECT_NEAR(q.maximum_angle.max, 90., 1e-12);
+  EXPECT_NEAR(q.skewness.mean, 0.25, 1e-12);
+  EXPECT_NEAR(q.skewness.max, 0.25, 1e-12);
+  // 45 degrees is not below 30: no triangle below any threshold.
+  EXPECT_EQ(q.share_with_minimum_angle_below(30.), 0.);
+  // Angle histogram: two corners at 45 and one at 90 per triangle, in 1 degree bins.
+  EXPECT_EQ(q.angle_histogram.total(), 96u);
+  EXPECT_EQ(q.angle_histogram.counts[45] + q.angle_histogram.counts[44], 64u);
+  EXPECT_EQ(q.angle_histogram.counts[90] + q.angle_histogram.counts[89], 32u);
+  // Edge lengths: 40 unit edges and 16 diagonals.
+  EXPECT_EQ(q.edge_length.min, 1.);
+  EXPECT_NEAR(q.edge_length.max, std::sqrt(2.), 1e-15);
+  EXPECT_NEAR(q.edge_length.mean, (40 + 16 * std::sqrt(2.)) / 56, 1e-12);
+  EXPECT_EQ(q.median_edge_length, 1.);
+  // Valences: interior vertices of this split grid have 6 neighbours (9 of them).
+  ASSERT_GT(q.valence_histogram.size(), 6u);
+  EXPECT_EQ(q.valence_histogram[6], 9u);
+}
+
+TEST(MeshQuality, SharesBelowThresholds)
+{
+  // One equilateral and one sliver triangle (minimum angle about 5.7 degrees).
+  Mesh m = single_triangle(Point(0, 0, 0), Point(1, 0, 0), Point(0.5, std::sqrt(3.) / 2, 0));
+  m.add_face(m.add_vertex(Point(0, 0, 1)), m.add_vertex(Point(10, 0, 1)), m.add_vertex(Point(5, 0.5, 1)));
+  const CR::Mesh_quality_report q = CR::mesh_quality(m);
+  EXPECT_EQ(q.share_with_minimum_angle_below(10.), 0.5);
+  EXPECT_EQ(q.share_with_minimum_angle_below(30.), 0.5);
+  EXPECT_NEAR(q.minimum_angle.min, std::atan(0.1) * 180 / CGAL_PI, 1e-12);
+  EXPECT_EQ(q.minimum_angle_histogram.counts[5] + q.minimum_angle_histogram.counts[59], 2u);
+  EXPECT_THROW(q.share_with_minimum_angle_below(15.), CR::Error);
+}
+
+TEST(MeshQuality, RejectsNonTriangleFaces)
+{
+  Mesh m;
+  m.add_face(m.add_vertex(Point(0, 0, 0)), m.add_vertex(Point(1, 0, 0)), m.add_vertex(Point(1, 1, 0)), m.add_vertex(Point(0, 1, 0)));
+  EXPECT_THROW(CR::mesh_quality(m), CR::Error);
+}
+
+TEST(ReferenceComparison, IdenticalCopy)
+{
+  const Mesh m = grid(8);
+  const CR::Reference_comparison c = CR::compare_to_reference(m, m);
+  EXPECT_NEAR(c.reference_diagonal, 8 * std::sqrt(2.), 1e-12);
+  EXPECT_LT(c.relative_hausdorff_distance(), 1e-12);
+  EXPECT_NEAR(c.area_ratio, 1., 1e-12);
+  EXPECT_FALSE(c.self_intersects);
+}
+
+TEST(ReferenceComparison, DisplacedCopy)
+{
+  // Raise the centre vertex of the grid by h: the displaced copy is h away from the reference
+  // at that vertex (sampled exactly), and the reference is closer to the copy than that.
+  const Mesh reference = grid(8);
+  Mesh displaced = reference;
+  const double h = 0.5;
+  for(auto v : displaced.vertices())
+    if(displaced.point(v) == Point(4, 4, 0))
+      displaced.point(v) = Point(4, 4, h);
+  const CR::Reference_comparison c = CR::compare_to_reference(displaced, reference);
+  const double diagonal = 8 * std::sqrt(2.);
+  EXPECT_NEAR(c.relative_distance_to_reference, h / diagonal, 1e-12);
+  EXPECT_GT(c.relative_distance_from_reference, 0.);
+  EXPECT_LT(c.relative_distance_from_reference, h / diagonal);
+  EXPECT_GT(c.area_ratio, 1.);
+  EXPECT_FALSE(c.self_intersects);
+
+  // A whole-mesh translation by t along z: both one-sided distances are t.
+  Mesh translated = reference;
+  for(auto v : translated.vertices())
+    translated.point(v) = translated.point(v) + K::Vector_3(0, 0, 0.25);
+  const CR::Reference_comparison t = CR::compare_to_reference(translated, reference);
+  EXPECT_NEAR(t.relative_distance_to_reference, 0.25 / diagonal, 1e-12);
+  EXPECT_NEAR(t.relative_distance_from_reference, 0.25 / diagonal, 1e-12);
+}
+
+TEST(ReferenceComparison, SelfIntersectingCopy)
+{
+  // Drag an interior vertex across its neighbours: its star folds over the adjacent faces.
+  const Mesh reference = grid(4);
+  Mesh folded = reference;
+  for(auto v : folded.vertices())
+    if(folded.point(v) == Point(2, 2, 0))
+      folded.point(v) = Point(3.5, 2.2, 0.);
+  EXPECT_FALSE(CR::compare_to_reference(reference, reference).self_intersects);
+  const CR::Reference_comparison c = CR::compare_to_reference(folded, reference);
+  EXPECT_TRUE(c.self_intersects);
+}
