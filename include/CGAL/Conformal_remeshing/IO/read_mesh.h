@@ -17,7 +17,11 @@
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
+#include <cmath>
+#include <cstdint>
+#include <map>
 #include <cerrno>
 #include <cstring>
 #include <fstream>
@@ -26,6 +30,66 @@
 
 namespace CGAL {
 namespace Conformal_remeshing {
+namespace internal {
+
+// Reads `filename` if it is a binary STL file (its size matches the triangle count of its
+// header) and returns false otherwise. CGAL's STL reader merges corners through a std::map,
+// which merges a NaN corner with an arbitrary vertex and so hides it; here only finite
+// corners are merged, so non-finite coordinates reach the input checks.
+template <typename Point>
+bool read_binary_STL(const std::string& filename, std::vector<Point>& points,
+                     std::vector<std::vector<std::size_t> >& polygons)
+{
+  std::ifstream in(filename, std::ios::binary | std::ios::ate);
+  if(!in)
+    return false;
+  const std::streamoff size = in.tellg();
+  if(size < 84)
+    return false;
+  in.seekg(80);
+  unsigned char count_bytes[4];
+  in.read(reinterpret_cast<char*>(count_bytes), 4);
+  const std::uint64_t count = std::uint64_t(count_bytes[0]) | (std::uint64_t(count_bytes[1]) << 8)
+                              | (std::uint64_t(count_bytes[2]) << 16) | (std::uint64_t(count_bytes[3]) << 24);
+  if(!in || std::uint64_t(size) != 84 + 50 * count)
+    return false;
+
+  auto lexicographic = [](const std::array<float, 3>& a, const std::array<float, 3>& b) { return a < b; };
+  std::map<std::array<float, 3>, std::size_t, decltype(lexicographic)> index_of(lexicographic);
+  points.clear();
+  polygons.assign(count, std::vector<std::size_t>(3));
+  for(std::uint64_t t = 0; t < count; ++t)
+  {
+    unsigned char record[50];
+    in.read(reinterpret_cast<char*>(record), 50);
+    if(!in)
+      return false;
+    for(int corner = 0; corner < 3; ++corner)
+    {
+      std::array<float, 3> xyz;
+      for(int k = 0; k < 3; ++k)
+      {
+        const unsigned char* b = record + 12 * (corner + 1) + 4 * k; // after the facet normal
+        const std::uint32_t bits = std::uint32_t(b[0]) | (std::uint32_t(b[1]) << 8)
+                                   | (std::uint32_t(b[2]) << 16) | (std::uint32_t(b[3]) << 24);
+        std::memcpy(&xyz[k], &bits, sizeof(float));
+      }
+      const bool finite = std::isfinite(xyz[0]) && std::isfinite(xyz[1]) && std::isfinite(xyz[2]);
+      std::size_t index = points.size();
+      if(finite)
+      {
+        const auto inserted = index_of.emplace(xyz, index);
+        index = inserted.first->second;
+      }
+      if(index == points.size())
+        points.push_back(Point(xyz[0], xyz[1], xyz[2]));
+      polygons[t][corner] = index;
+    }
+  }
+  return true;
+}
+
+} // namespace internal
 
 /// \ingroup PkgConformalRemeshingIO
 /// Reads `filename` (OFF, OBJ, PLY or STL, ASCII or binary, chosen by the extension) into
@@ -35,8 +99,9 @@ namespace Conformal_remeshing {
 /// no halfedge data structure can hold (non-manifold edges, inconsistent orientation,
 /// non-orientable surfaces) are reported instead of making the read fail. `mesh` is built only
 /// when the soup is a valid polygon mesh; then the report also carries the topology of each
-/// connected component (`topology_available`), and `mesh` is cleared otherwise. The STL reader
-/// merges the identical corners of its triangle soup into shared vertices.
+/// connected component (`topology_available`), and `mesh` is cleared otherwise. The STL readers
+/// merge the identical corners of the file's triangle soup into shared vertices (corners with
+/// non-finite coordinates are never merged, so that the checks see them).
 ///
 /// \tparam PolygonMesh a model of `MutableFaceGraph` with an internal point property map
 ///
@@ -73,7 +138,8 @@ Mesh_check_report read_and_check_mesh(const std::string& filename, PolygonMesh& 
   bool parsed = false;
   try
   {
-    parsed = CGAL::IO::read_polygon_soup(filename, points, polygons, CGAL::parameters::verbose(false));
+    parsed = (extension == "stl" && internal::read_binary_STL(filename, points, polygons))
+             || CGAL::IO::read_polygon_soup(filename, points, polygons, CGAL::parameters::verbose(false));
   }
   catch(const std::exception& e)
   {

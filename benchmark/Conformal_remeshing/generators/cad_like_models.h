@@ -1,0 +1,572 @@
+// Copyright (c) 2026 The CGAL Conformal Remeshing project.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Deterministic generators of CAD-like triangle meshes: planar faces triangulated without
+// interior points (fans of slivers, the way CAD exporters tessellate), cylinders as long strips.
+// They give the project its default model and test inputs with known topology.
+
+#ifndef CGAL_CONFORMAL_REMESHING_BENCHMARKS_CAD_LIKE_MODELS_H
+#define CGAL_CONFORMAL_REMESHING_BENCHMARKS_CAD_LIKE_MODELS_H
+
+#include <CGAL/Conformal_remeshing/check_mesh.h>
+#include <CGAL/Conformal_remeshing/mesh_quality.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Kernel_traits.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <random>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Conformal_remeshing {
+namespace benchmarks {
+
+/// A circular through-hole: centre (`x`, `y`) in the plate's plane and radius.
+struct Circular_hole
+{
+  double x = 0.;
+  double y = 0.;
+  double radius = 1.;
+};
+
+/// Parameters of `make_perforated_plate()`. The plate is centred at the origin, spans
+/// `[-length/2, length/2] x [-width/2, width/2]` in the xy-plane and `[0, thickness]` along z.
+struct Perforated_plate_parameters
+{
+  double length = 120.;          ///< size along x
+  double width = 80.;            ///< size along y
+  double thickness = 6.;         ///< size along z
+  double corner_radius = 10.;    ///< fillet radius of the four vertical edges (0: sharp corners)
+  int segments_per_circle = 96;  ///< polygon segments of a full circle (holes; a fillet gets a quarter)
+
+  /// Explicit holes. When empty, `number_of_random_holes` holes are placed from `seed`.
+  std::vector<Circular_hole> holes;
+
+  int number_of_random_holes = 7;  ///< used only when `holes` is empty
+  std::uint64_t seed = 3;          ///< seed of the hole placement (std::mt19937_64)
+  double min_hole_radius = 3.;     ///< radius range of the random holes
+  double max_hole_radius = 10.;
+  double min_clearance = 3.;       ///< minimum material between two holes and between a hole and the rim
+  int max_placement_attempts = 100000;  ///< per hole, before the placement is declared impossible
+};
+
+/// Statistics of a generated model, as printed by `generate_cad_model`.
+struct Cad_model_statistics
+{
+  std::size_t vertices = 0;
+  std::size_t edges = 0;
+  std::size_t faces = 0;
+  std::size_t boundary_loops = 0;
+  long euler_characteristic = 0;
+  long genus = 0;                      ///< (2 - chi - boundary loops) / 2: meaningful for one connected component
+  double min_angle_degrees = 0.;       ///< smallest triangle angle
+  double share_min_angle_below_10 = 0.; ///< share of triangles whose minimum angle is below 10 degrees
+  double share_min_angle_below_1 = 0.;  ///< same, below 1 degree
+};
+
+namespace internal {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Planar_kernel;
+typedef Planar_kernel::Point_2 Planar_point;
+
+// cos and sin of a fraction of a full turn, exact at the quarter turns so that straight
+// fillet ends and axis-aligned sides are exactly axis-aligned.
+inline std::pair<double, double> unit_circle_point(long numerator, long denominator)
+{
+  long n = numerator % denominator;
+  if(n < 0)
+    n += denominator;
+  if((4 * n) % denominator == 0) {
+    switch((4 * n) / denominator) {
+      case 0: return {1., 0.};
+      case 1: return {0., 1.};
+      case 2: return {-1., 0.};
+      default: return {0., -1.};
+    }
+  }
+  const double angle = 2. * CGAL_PI * double(n) / double(denominator);
+  return {std::cos(angle), std::sin(angle)};
+}
+
+// Strictly inside the polygon's interior angle at `v` (interior on the left of prev -> v -> next)?
+inline bool strictly_inside_interior_angle(const Planar_point& v, const Planar_point& next,
+                                           const Planar_point& prev, const Planar_point& q)
+{
+  const CGAL::Orientation turn = CGAL::orientation(prev, v, next);
+  if(turn == CGAL::LEFT_TURN)
+    return CGAL::orientation(v, next, q) == CGAL::LEFT_TURN &&
+           CGAL::orientation(v, q, prev) == CGAL::LEFT_TURN;
+  if(turn == CGAL::RIGHT_TURN) // reflex: the complement of the closed convex exterior angle
+    return !(CGAL::orientation(v, prev, q) != CGAL::RIGHT_TURN &&
+             CGAL::orientation(v, q, next) != CGAL::RIGHT_TURN);
+  // Straight vertex: the open half-plane on the left. A spike (prev and next in the same
+  // direction) cannot occur in the polygons built here; treat it like a straight vertex.
+  return CGAL::orientation(v, next, q) == CGAL::LEFT_TURN;
+}
+
+/// Triangulates a polygon with holes using only its vertices, the way CAD exporters do:
+/// each hole is bridged to the nearest visible vertex of the boundary built so far, and the
+/// resulting weakly simple polygon is ear-clipped, continuing from the last ear so that the
+/// triangles come in fans. All decisions use exact predicates, so no triangle is flat.
+///
+/// `points` holds every vertex; `outer` lists the outer loop counterclockwise and each of
+/// `holes` a hole clockwise (indices into `points`); `start` picks where the ear clipping
+/// begins (modulo the polygon size). Returns counterclockwise triangles.
+/// Throws `std::runtime_error` if the input is not a valid polygon with holes.
+class Fan_triangulator
+{
+public:
+  Fan_triangulator(const std::vector<Planar_point>& points,
+                   const std::vector<std::size_t>& outer,
+                   const std::vector<std::vector<std::size_t> >& holes)
+    : pts_(points), holes_(holes)
+  {
+    for(std::size_t i = 0; i < outer.size(); ++i)
+      push_position(outer[i]);
+    link_loop(0, outer.size());
+  }
+
+  std::vector<std::array<std::size_t, 3> > run(std::size_t start)
+  {
+    bridge_holes();
+    return clip_ears(start);
+  }
+
+private:
+  const std::vector<Planar_point>& pts_;
+  std::vector<std::vector<std::size_t> > holes_;
+  // The chain: a doubly linked list of positions, each naming a vertex (bridge vertices
+  // appear twice).
+  std::vector<std::size_t> vertex_, next_, prev_;
+  std::size_t head_ = 0;
+
+  std::size_t push_position(std::size_t v)
+  {
+    vertex_.push_back(v);
+    next_.push_back(0);
+    prev_.push_back(0);
+    return vertex_.size() - 1;
+  }
+
+  void link_loop(std::size_t first, std::size_t count)
+  {
+    for(std::size_t i = 0; i < count; ++i) {
+      next_[first + i] = first + (i + 1) % count;
+      prev_[first + (i + 1) % count] = first + i;
+    }
+  }
+
+  const Planar_point& at(std::size_t position) const { return pts_[vertex_[position]]; }
+
+  // Chain positions, in chain order from head_.
+  std::vector<std::size_t> chain() const
+  {
+    std::vector<std::size_t> result;
+    std::size_t p = head_;
+    do {
+      result.push_back(p);
+      p = next_[p];
+    } while(p != head_);
+    return result;
+  }
+
+  // Does the open segment m-p meet the edge u-w (vertex indices) anywhere but at shared ends?
+  bool blocks(std::size_t m, std::size_t p, std::size_t u, std::size_t w) const
+  {
+    const bool u_shared = (u == m || u == p), w_shared = (w == m || w == p);
+    if(u_shared && w_shared)
+      return true; // the edge is m-p itself or degenerate: never a valid bridge
+    if(u_shared || w_shared) {
+      const std::size_t shared = u_shared ? u : w, other = u_shared ? w : u;
+      const std::size_t far = (shared == m) ? p : m;
+      const Planar_point &s = pts_[shared], &o = pts_[other], &f = pts_[far];
+      // Only an overlap along the same ray can hit the segment elsewhere than at `shared`.
+      return CGAL::collinear(s, o, f) && (o - s) * (f - s) > 0;
+    }
+    return CGAL::do_intersect(Planar_kernel::Segment_2(pts_[m], pts_[p]),
+                              Planar_kernel::Segment_2(pts_[u], pts_[w]));
+  }
+
+  void bridge_holes()
+  {
+    // Bridging in decreasing order of the holes' largest x guarantees a visible vertex: the
+    // ray to +x from a hole's rightmost vertex can only meet already bridged holes.
+    std::vector<std::size_t> order(holes_.size());
+    for(std::size_t i = 0; i < order.size(); ++i)
+      order[i] = i;
+    auto rightmost = [&](std::size_t h) {
+      std::size_t best = 0;
+      for(std::size_t k = 1; k < holes_[h].size(); ++k) {
+        const Planar_point &a = pts_[holes_[h][k]], &b = pts_[holes_[h][best]];
+        if(a.x() > b.x() || (a.x() == b.x() && a.y() > b.y()))
+          best = k;
+      }
+      return best;
+    };
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
+      return pts_[holes_[a][rightmost(a)]].x() > pts_[holes_[b][rightmost(b)]].x();
+    });
+    std::vector<bool> bridged(holes_.size(), false);
+
+    for(std::size_t h : order) {
+      const std::vector<std::size_t>& hole = holes_[h];
+      const std::size_t n = hole.size(), k = rightmost(h);
+      const std::size_t m = hole[k];
+      const Planar_point& M = pts_[m];
+      const Planar_point& hole_next = pts_[hole[(k + 1) % n]];
+      const Planar_point& hole_prev = pts_[hole[(k + n - 1) % n]];
+
+      std::vector<std::size_t> candidates = chain();
+      std::vector<double> distance(vertex_.size(), 0.);
+      for(std::size_t p : candidates)
+        distance[p] = CGAL::squared_distance(M, at(p));
+      std::stable_sort(candidates.begin(), candidates.end(),
+                       [&](std::size_t a, std::size_t b) { return distance[a] < distance[b]; });
+
+      std::size_t chosen = vertex_.size();
+      for(std::size_t p : candidates) {
+        if(vertex_[p] == m || at(p) == M)
+          continue;
+        if(!strictly_inside_interior_angle(at(p), at(next_[p]), at(prev_[p]), M) ||
+           !strictly_inside_interior_angle(M, hole_next, hole_prev, at(p)))
+          continue;
+        bool visible = true;
+        for(std::size_t q : chain())
+          if(blocks(m, vertex_[p], vertex_[q], vertex_[next_[q]])) { visible = false; break; }
+        for(std::size_t g = 0; visible && g < holes_.size(); ++g) {
+          if(bridged[g])
+            continue;
+          for(std::size_t i = 0; i < holes_[g].size(); ++i)
+            if(blocks(m, vertex_[p], holes_[g][i], holes_[g][(i + 1) % holes_[g].size()])) {
+              visible = false;
+              break;
+            }
+        }
+        if(visible) { chosen = p; break; }
+      }
+      if(chosen == vertex_.size())
+        throw std::runtime_error("Fan_triangulator: no visible vertex to bridge a hole");
+
+      // Splice chosen -> m -> (hole loop) -> m -> chosen' -> old next of chosen.
+      const std::size_t after = next_[chosen];
+      std::size_t last = chosen;
+      for(std::size_t i = 0; i <= n; ++i) {
+        const std::size_t p = push_position(hole[(k + i) % n]);
+        next_[last] = p;
+        prev_[p] = last;
+        last = p;
+      }
+      const std::size_t chosen_copy = push_position(vertex_[chosen]);
+      next_[last] = chosen_copy;
+      prev_[chosen_copy] = last;
+      next_[chosen_copy] = after;
+      prev_[after] = chosen_copy;
+      bridged[h] = true;
+    }
+  }
+
+  // Is the triangle (prev, p, next) an ear of the current chain?
+  bool is_ear(std::size_t p) const
+  {
+    const std::size_t pa = prev_[p], pc = next_[p];
+    const std::size_t a = vertex_[pa], b = vertex_[p], c = vertex_[pc];
+    const Planar_point &A = pts_[a], &B = pts_[b], &C = pts_[c];
+    if(CGAL::orientation(A, B, C) != CGAL::LEFT_TURN)
+      return false;
+    auto is_corner = [&](std::size_t v) { return v == a || v == b || v == c; };
+    // The triangle's angle at each corner, counterclockwise from the first to the second ray.
+    auto enters = [&](std::size_t corner, const Planar_point& q) {
+      const Planar_point& X = pts_[corner];
+      const Planar_point& Y = (corner == a) ? B : (corner == b) ? C : A;
+      const Planar_point& Z = (corner == a) ? C : (corner == b) ? A : B;
+      return CGAL::orientation(X, Y, q) == CGAL::LEFT_TURN &&
+             CGAL::orientation(X, q, Z) == CGAL::LEFT_TURN;
+    };
+    std::size_t q = p;
+    do {
+      const std::size_t v = vertex_[q];
+      if(is_corner(v)) {
+        // Another occurrence of a corner (a bridge end) must not send an edge into the ear.
+        for(std::size_t r : {prev_[q], next_[q]}) {
+          const bool ear_edge = (q == pa && r == p) || (q == p && (r == pa || r == pc)) ||
+                                (q == pc && r == p);
+          if(!ear_edge && !is_corner(vertex_[r]) && enters(v, pts_[vertex_[r]]))
+            return false;
+        }
+      } else {
+        const Planar_point& Q = pts_[v];
+        if(CGAL::orientation(A, B, Q) != CGAL::RIGHT_TURN &&
+           CGAL::orientation(B, C, Q) != CGAL::RIGHT_TURN &&
+           CGAL::orientation(C, A, Q) != CGAL::RIGHT_TURN)
+          return false;
+      }
+      q = next_[q];
+    } while(q != p);
+    return true;
+  }
+
+  std::vector<std::array<std::size_t, 3> > clip_ears(std::size_t start)
+  {
+    std::vector<std::array<std::size_t, 3> > triangles;
+    std::vector<std::size_t> positions = chain();
+    std::size_t count = positions.size();
+    std::size_t p = positions[start % count];
+    std::size_t failures = 0;
+    while(count > 3) {
+      if(is_ear(p)) {
+        triangles.push_back({vertex_[prev_[p]], vertex_[p], vertex_[next_[p]]});
+        const std::size_t c = next_[p];
+        next_[prev_[p]] = c;
+        prev_[c] = prev_[p];
+        --count;
+        p = c; // the next ear shares the previous corner: fans, as CAD exporters make
+        failures = 0;
+      } else {
+        p = next_[p];
+        if(++failures > count)
+          throw std::runtime_error("Fan_triangulator: no ear found (invalid polygon?)");
+      }
+    }
+    const std::array<std::size_t, 3> last = {vertex_[prev_[p]], vertex_[p], vertex_[next_[p]]};
+    if(CGAL::orientation(pts_[last[0]], pts_[last[1]], pts_[last[2]]) != CGAL::LEFT_TURN)
+      throw std::runtime_error("Fan_triangulator: degenerate last triangle");
+    triangles.push_back(last);
+    return triangles;
+  }
+};
+
+// Uniform double in [0, 1) from the raw 64-bit output: unlike std::uniform_real_distribution,
+// the same on every standard library.
+inline double unit_random(std::mt19937_64& generator)
+{
+  return double(generator() >> 11) * (1.0 / 9007199254740992.0);
+}
+
+// Material between the circle (centre, radius) and the rounded rectangle's rim: >= 0 if inside.
+inline double rim_clearance(const Perforated_plate_parameters& p, const Circular_hole& h)
+{
+  const double hx = p.length / 2., hy = p.width / 2., r = p.corner_radius;
+  const double ax = std::abs(h.x), ay = std::abs(h.y);
+  double distance_to_rim;
+  if(ax > hx - r && ay > hy - r)
+    distance_to_rim = r - std::hypot(ax - (hx - r), ay - (hy - r));
+  else
+    distance_to_rim = std::min(hx - ax, hy - ay);
+  return distance_to_rim - h.radius;
+}
+
+} // namespace internal
+
+/// Returns the holes of a perforated plate: `p.holes` when given, otherwise
+/// `p.number_of_random_holes` holes placed by rejection sampling from `p.seed`, each at least
+/// `p.min_clearance` away from the rim and from the other holes.
+/// Throws `std::invalid_argument` for invalid parameters and `std::runtime_error` when the
+/// random holes cannot be placed.
+inline std::vector<Circular_hole> perforated_plate_holes(const Perforated_plate_parameters& p)
+{
+  for(double value : {p.length, p.width, p.thickness, p.corner_radius, p.min_clearance,
+                       p.min_hole_radius, p.max_hole_radius})
+    if(!std::isfinite(value))
+      throw std::invalid_argument("perforated plate: sizes must be finite");
+  if(!(p.length > 0.) || !(p.width > 0.) || !(p.thickness > 0.))
+    throw std::invalid_argument("perforated plate: length, width and thickness must be positive");
+  if(!(p.corner_radius >= 0.) || !(p.corner_radius < std::min(p.length, p.width) / 2.))
+    throw std::invalid_argument("perforated plate: the corner radius must be in [0, min(length, width)/2)");
+  if(p.segments_per_circle < 8 || p.segments_per_circle > 1000000)
+    throw std::invalid_argument("perforated plate: segments per circle must be in [8, 1000000]");
+  if(!(p.min_clearance > 0.))
+    throw std::invalid_argument("perforated plate: the clearance must be positive");
+
+  auto fits = [&](const Circular_hole& h, const std::vector<Circular_hole>& others) {
+    if(internal::rim_clearance(p, h) < p.min_clearance)
+      return false;
+    for(const Circular_hole& o : others)
+      if(std::hypot(h.x - o.x, h.y - o.y) < h.radius + o.radius + p.min_clearance)
+        return false;
+    return true;
+  };
+
+  if(!p.holes.empty()) {
+    std::vector<Circular_hole> accepted;
+    for(const Circular_hole& h : p.holes) {
+      if(!(h.radius > 0.) || !std::isfinite(h.radius) || !std::isfinite(h.x) || !std::isfinite(h.y))
+        throw std::invalid_argument("perforated plate: a hole needs a finite centre and a positive radius");
+      if(!fits(h, accepted))
+        throw std::invalid_argument("perforated plate: a hole overlaps another one or the rim "
+                                    "(closer than the clearance)");
+      accepted.push_back(h);
+    }
+    return accepted;
+  }
+
+  if(p.number_of_random_holes < 0)
+    throw std::invalid_argument("perforated plate: negative number of holes");
+  if(!(p.min_hole_radius > 0.) || !(p.max_hole_radius >= p.min_hole_radius))
+    throw std::invalid_argument("perforated plate: need 0 < min hole radius <= max hole radius");
+
+  std::mt19937_64 generator(p.seed);
+  std::vector<Circular_hole> holes;
+  for(int i = 0; i < p.number_of_random_holes; ++i) {
+    bool placed = false;
+    for(int attempt = 0; attempt < p.max_placement_attempts && !placed; ++attempt) {
+      Circular_hole h;
+      h.radius = p.min_hole_radius + (p.max_hole_radius - p.min_hole_radius) * internal::unit_random(generator);
+      h.x = (internal::unit_random(generator) - 0.5) * p.length;
+      h.y = (internal::unit_random(generator) - 0.5) * p.width;
+      if(fits(h, holes)) {
+        holes.push_back(h);
+        placed = true;
+      }
+    }
+    if(!placed)
+      throw std::runtime_error("perforated plate: could not place hole " + std::to_string(i + 1) + " of " +
+                               std::to_string(p.number_of_random_holes) +
+                               " without overlap; use fewer or smaller holes, or a larger plate");
+  }
+  return holes;
+}
+
+/// Builds a closed, outward-oriented triangle mesh of a plate with rounded vertical edges and
+/// circular through-holes (genus = number of holes), tessellated as CAD exporters do:
+/// - top and bottom faces triangulated from their boundary vertices only (bridged ear clipping
+///   in fans), so they are full of long slivers;
+/// - hole walls and fillets as strips, one quad (two triangles) per circle segment spanning the
+///   whole thickness;
+/// - straight sides as one long rectangle (two triangles) each.
+///
+/// `mesh` is cleared first. The result depends only on `p` (no time, no unordered containers).
+/// Throws like `perforated_plate_holes()`, and `std::runtime_error` if the triangulation fails.
+template <class Point_3>
+void make_perforated_plate(CGAL::Surface_mesh<Point_3>& mesh, const Perforated_plate_parameters& p)
+{
+  typedef internal::Planar_point Planar_point;
+  const std::vector<Circular_hole> holes = perforated_plate_holes(p);
+  const long segments = p.segments_per_circle;
+
+  // Planar boundary: outer loop counterclockwise, then each hole clockwise, so that the plate's
+  // material is on the left of every boundary edge.
+  std::vector<Planar_point> points;
+  std::vector<std::size_t> outer;
+  const double hx = p.length / 2., hy = p.width / 2., r = p.corner_radius;
+  const long quarter = (segments + 3) / 4;
+  const double corner_x[4] = {hx - r, hx - r, -hx + r, -hx + r};
+  const double corner_y[4] = {-hy + r, hy - r, hy - r, -hy + r};
+  for(long c = 0; c < 4; ++c) {
+    if(r == 0.) { // sharp corner
+      outer.push_back(points.size());
+      points.push_back(Planar_point(c < 2 ? hx : -hx, (c == 0 || c == 3) ? -hy : hy));
+      continue;
+    }
+    // Fillet c spans the quarter turn from (c-1)/4 to c/4 of a full turn.
+    for(long k = 0; k <= quarter; ++k) {
+      const std::pair<double, double> u = internal::unit_circle_point((c - 1) * quarter + k, 4 * quarter);
+      outer.push_back(points.size());
+      points.push_back(Planar_point(corner_x[c] + r * u.first, corner_y[c] + r * u.second));
+    }
+  }
+  std::vector<std::vector<std::size_t> > hole_loops;
+  for(const Circular_hole& h : holes) {
+    std::vector<std::size_t> loop;
+    for(long k = 0; k < segments; ++k) {
+      const std::pair<double, double> u = internal::unit_circle_point(-k, segments);
+      loop.push_back(points.size());
+      points.push_back(Planar_point(h.x + h.radius * u.first, h.y + h.radius * u.second));
+    }
+    hole_loops.push_back(loop);
+  }
+
+  // CAD exporters triangulate each face on its own: the bottom starts its fans elsewhere.
+  const std::vector<std::array<std::size_t, 3> > top =
+    internal::Fan_triangulator(points, outer, hole_loops).run(0);
+  const std::vector<std::array<std::size_t, 3> > bottom =
+    internal::Fan_triangulator(points, outer, hole_loops).run(points.size() / 2);
+
+  mesh.clear();
+  typedef typename CGAL::Surface_mesh<Point_3>::Vertex_index Vertex_index;
+  std::vector<Vertex_index> top_vertex, bottom_vertex;
+  for(const Planar_point& q : points)
+    top_vertex.push_back(mesh.add_vertex(Point_3(q.x(), q.y(), p.thickness)));
+  for(const Planar_point& q : points)
+    bottom_vertex.push_back(mesh.add_vertex(Point_3(q.x(), q.y(), 0.)));
+
+  auto add_triangle = [&](Vertex_index a, Vertex_index b, Vertex_index c) {
+    if(mesh.add_face(a, b, c) == CGAL::Surface_mesh<Point_3>::null_face())
+      throw std::runtime_error("make_perforated_plate: non-manifold triangle (internal error)");
+  };
+  for(const std::array<std::size_t, 3>& t : top)
+    add_triangle(top_vertex[t[0]], top_vertex[t[1]], top_vertex[t[2]]);
+  for(const std::array<std::size_t, 3>& t : bottom) // seen from below: reversed
+    add_triangle(bottom_vertex[t[2]], bottom_vertex[t[1]], bottom_vertex[t[0]]);
+
+  // Walls: for a boundary edge i -> j with material on its left, the outside is on its right.
+  auto add_wall = [&](const std::vector<std::size_t>& loop) {
+    for(std::size_t k = 0; k < loop.size(); ++k) {
+      const std::size_t i = loop[k], j = loop[(k + 1) % loop.size()];
+      add_triangle(bottom_vertex[i], bottom_vertex[j], top_vertex[j]);
+      add_triangle(bottom_vertex[i], top_vertex[j], top_vertex[i]);
+    }
+  };
+  add_wall(outer);
+  for(const std::vector<std::size_t>& loop : hole_loops)
+    add_wall(loop);
+}
+
+/// Builds an open flat disc (one boundary loop, genus 0) of radius `radius` in the plane z = 0,
+/// triangulated as a single fan from one boundary vertex over `segments` boundary vertices:
+/// the smallest input with CAD-like fans (by the inscribed angle theorem every triangle has the
+/// angle pi/segments at the fan's apex; the two triangles next to the apex have two of them).
+template <class Point_3>
+void make_sliver_fan_disc(CGAL::Surface_mesh<Point_3>& mesh, int segments = 64, double radius = 1.)
+{
+  if(segments < 4 || segments > 10000000 || !(radius > 0.) || !std::isfinite(radius))
+    throw std::invalid_argument("sliver fan disc: need 4 to 10^7 segments and a positive, finite radius");
+  mesh.clear();
+  typedef typename CGAL::Surface_mesh<Point_3>::Vertex_index Vertex_index;
+  std::vector<Vertex_index> v;
+  for(int k = 0; k < segments; ++k) {
+    const std::pair<double, double> u = internal::unit_circle_point(k, segments);
+    v.push_back(mesh.add_vertex(Point_3(radius * u.first, radius * u.second, 0.)));
+  }
+  for(int k = 1; k + 1 < segments; ++k)
+    mesh.add_face(v[0], v[k], v[k + 1]);
+}
+
+/// Counts and angle statistics of a triangle mesh (see `Cad_model_statistics`), from the
+/// package's own input checks and quality measures.
+template <class Point_3>
+Cad_model_statistics cad_model_statistics(const CGAL::Surface_mesh<Point_3>& mesh)
+{
+  const Mesh_check_report checks = check_mesh(mesh);
+  const Mesh_quality_report quality = mesh_quality(mesh);
+  Cad_model_statistics s;
+  s.vertices = mesh.number_of_vertices();
+  s.edges = mesh.number_of_edges();
+  s.faces = mesh.number_of_faces();
+  for(const Component_topology& c : checks.components)
+  {
+    s.boundary_loops += c.boundary_loops;
+    s.euler_characteristic += c.euler_characteristic;
+  }
+  s.genus = checks.total_genus();
+  s.min_angle_degrees = quality.minimum_angle.min;
+  s.share_min_angle_below_10 = quality.share_with_minimum_angle_below(10.);
+  // The minimum-angle histogram has 1 degree bins: its first bin holds the angles below 1 degree.
+  if(s.faces > 0)
+    s.share_min_angle_below_1 = double(quality.minimum_angle_histogram.counts[0]) / double(s.faces);
+  return s;
+}
+
+} // namespace benchmarks
+} // namespace Conformal_remeshing
+} // namespace CGAL
+
+#endif // CGAL_CONFORMAL_REMESHING_BENCHMARKS_CAD_LIKE_MODELS_H

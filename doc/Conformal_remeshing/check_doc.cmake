@@ -1,0 +1,11 @@
+# Runs doxygen and fails if it failed or wrote any warning.
+file(REMOVE "${LOG}")
+execute_process(COMMAND "${DOXYGEN}" "${DOXYFILE}" RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+set(warnings "")
+if(EXISTS "${LOG}")
+  file(READ "${LOG}" warnings)
+endif()
+if(NOT code STREQUAL "0" OR NOT warnings STREQUAL "")
+  message(FATAL_ERROR "doxygen failed (${code}):\n${out}${err}${warnings}")
+endif()
+message("documentation built without warnings")

@@ -1,0 +1,53 @@
+// Copyright (c) 2026 CGAL Conformal Remeshing contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Output files are written to a temporary name and renamed into place, so that a failure
+// never leaves a partial file behind.
+
+#ifndef CGAL_CONFORMAL_REMESHING_TOOLS_ATOMIC_FILE_H
+#define CGAL_CONFORMAL_REMESHING_TOOLS_ATOMIC_FILE_H
+
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <functional>
+#include <stdexcept>
+#include <string>
+
+namespace Conformal_remeshing_tools {
+
+// Calls `write(stream)` on a temporary file beside `path`, then renames it to `path`.
+// Throws std::runtime_error naming the file and the reason on any failure.
+inline void write_file_atomically(const std::string& path, const std::function<bool(std::ostream&)>& write)
+{
+  const std::string temporary = path + ".part";
+  {
+    std::ofstream out(temporary, std::ios::binary);
+    if(!out)
+      throw std::runtime_error("cannot write '" + path + "': " + std::strerror(errno));
+    const bool written = write(out);
+    out.flush();
+    if(!written || !out)
+    {
+      out.close();
+      std::remove(temporary.c_str());
+      throw std::runtime_error("cannot write '" + path + "': output failed");
+    }
+  }
+  if(std::rename(temporary.c_str(), path.c_str()) != 0)
+  {
+    const std::string reason = std::strerror(errno);
+    std::remove(temporary.c_str());
+    throw std::runtime_error("cannot write '" + path + "': " + reason);
+  }
+}
+
+inline void write_file_atomically(const std::string& path, const std::string& content)
+{
+  write_file_atomically(path, [&](std::ostream& out) { out << content; return bool(out); });
+}
+
+} // namespace Conformal_remeshing_tools
+
+#endif // CGAL_CONFORMAL_REMESHING_TOOLS_ATOMIC_FILE_H

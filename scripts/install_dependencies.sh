@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# Installs what the project needs from Debian's packages; only what is missing, so running it
+# again is quick and changes nothing. Works as root or through sudo.
+#
+#   scripts/install_dependencies.sh          to build the package and its tools
+#   scripts/install_dependencies.sh --tests  also what the test suite needs: GoogleTest, doxygen
+#                                            and CGAL's public test meshes (see fetch_cgal_data.sh)
+set -euo pipefail
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+
+with_tests=0
+for arg in "$@"; do
+  case "$arg" in
+    --tests) with_tests=1 ;;
+    -h|--help) sed -n '2,9p' "${BASH_SOURCE[0]}"; exit 0 ;;
+    *) echo "install_dependencies.sh: unknown argument '$arg'" >&2; exit 2 ;;
+  esac
+done
+
+packages=(cmake make g++ libcgal-dev libeigen3-dev libboost-dev libgmp-dev libmpfr-dev libtbb-dev)
+if [ "$with_tests" -eq 1 ]; then
+  packages+=(libgtest-dev doxygen)
+fi
+
+as_root() {
+  if [ "$(id -u)" -eq 0 ]; then
+    "$@"
+  elif command -v sudo >/dev/null 2>&1; then
+    sudo "$@"
+  else
+    echo "install_dependencies.sh: installing needs root or sudo: $*" >&2
+    exit 1
+  fi
+}
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "Installing Debian packages: ${missing[*]}"
+  as_root apt-get update -qq
+  as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}"
+else
+  echo "Debian packages: all ${#packages[@]} present"
+fi
+
+if [ "$with_tests" -eq 1 ]; then
+  bash "$root/scripts/fetch_cgal_data.sh"
+fi

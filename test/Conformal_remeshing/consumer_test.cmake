@@ -1,0 +1,28 @@
+# Installs the package from BUILD_DIR into a fresh prefix under WORK_DIR, then configures, builds
+# and runs the consumer project against that installed copy only.
+function(run)
+  execute_process(COMMAND ${ARGN} RESULT_VARIABLE code OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  message("${out}${err}")
+  if(NOT code STREQUAL "0")
+    message(FATAL_ERROR "failed (${code}): ${ARGN}")
+  endif()
+  set(last_output "${out}" PARENT_SCOPE)
+endfunction()
+
+file(REMOVE_RECURSE "${WORK_DIR}")
+set(prefix "${WORK_DIR}/prefix")
+run(${CMAKE_COMMAND} --install "${BUILD_DIR}" --prefix "${prefix}")
+if(NOT EXISTS "${prefix}/include/CGAL/Conformal_remeshing/check_mesh.h")
+  message(FATAL_ERROR "the headers were not installed under ${prefix}")
+endif()
+run(${CMAKE_COMMAND} -S "${CONSUMER_DIR}" -B "${WORK_DIR}/build" -DCMAKE_BUILD_TYPE=Release
+    "-DCMAKE_PREFIX_PATH=${prefix}")
+file(STRINGS "${WORK_DIR}/build/CMakeCache.txt" found REGEX "^CGAL_Conformal_remeshing_DIR")
+if(NOT found MATCHES "${prefix}")
+  message(FATAL_ERROR "the consumer found the package elsewhere: ${found}")
+endif()
+run(${CMAKE_COMMAND} --build "${WORK_DIR}/build")
+run("${WORK_DIR}/build/consumer")
+if(NOT last_output MATCHES "consumer: valid, genus 0")
+  message(FATAL_ERROR "unexpected consumer output: ${last_output}")
+endif()

@@ -1,0 +1,258 @@
+// Tests of the CAD-like model generators (benchmark/Conformal_remeshing/generators) and of the
+// shipped default model examples/Conformal_remeshing/data/perforated_plate.off.
+
+#include <cad_like_models.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
+#include <CGAL/Polygon_mesh_processing/repair.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace {
+
+typedef CGAL::Exact_predicates_inexact_constructions_kernel Kernel;
+typedef Kernel::Point_3 Point_3;
+typedef CGAL::Surface_mesh<Point_3> Mesh;
+namespace bm = CGAL::Conformal_remeshing::benchmarks;
+namespace PMP = CGAL::Polygon_mesh_processing;
+
+// The parameters of the documented command that regenerates the default model
+// (examples/Conformal_remeshing/data/README.md); spelled out so that a change of the struct's
+// defaults cannot silently change what the shipped file is compared with.
+bm::Perforated_plate_parameters default_model_parameters()
+{
+  bm::Perforated_plate_parameters p;
+  p.length = 120.;
+  p.width = 80.;
+  p.thickness = 6.;
+  p.corner_radius = 10.;
+  p.segments_per_circle = 96;
+  p.number_of_random_holes = 7;
+  p.seed = 3;
+  p.min_hole_radius = 3.;
+  p.max_hole_radius = 10.;
+  p.min_clearance = 3.;
+  return p;
+}
+
+std::array<std::size_t, 3> face_vertices(const Mesh& mesh, Mesh::Face_index f)
+{
+  std::array<std::size_t, 3> v{};
+  std::size_t i = 0;
+  for(Mesh::Vertex_index w : CGAL::vertices_around_face(mesh.halfedge(f), mesh)) {
+    if(i < 3)
+      v[i] = std::size_t(w);
+    ++i;
+  }
+  EXPECT_EQ(i, 3u);
+  // Same cyclic order, starting at the smallest index: independent of the face's halfedge.
+  std::rotate(v.begin(), std::min_element(v.begin(), v.end()), v.end());
+  return v;
+}
+
+// Every hard requirement on a generated closed model.
+void expect_valid_closed_model(const Mesh& mesh, long genus)
+{
+  ASSERT_FALSE(mesh.is_empty());
+  EXPECT_TRUE(mesh.is_valid(false));
+  EXPECT_TRUE(CGAL::is_triangle_mesh(mesh));
+  EXPECT_TRUE(CGAL::is_closed(mesh));
+  for(Mesh::Vertex_index v : mesh.vertices())
+    EXPECT_FALSE(PMP::is_non_manifold_vertex(v, mesh)) << "vertex " << v;
+
+  std::size_t degenerate = 0;
+  for(Mesh::Face_index f : mesh.faces()) {
+    const std::array<std::size_t, 3> v = face_vertices(mesh, f);
+    degenerate += CGAL::collinear(mesh.point(Mesh::Vertex_index(Mesh::size_type(v[0]))),
+                                  mesh.point(Mesh::Vertex_index(Mesh::size_type(v[1]))),
+                                  mesh.point(Mesh::Vertex_index(Mesh::size_type(v[2]))));
+  }
+  EXPECT_EQ(degenerate, 0u);
+
+  std::vector<Point_3> points(mesh.points().begin(), mesh.points().end());
+  std::sort(points.begin(), points.end());
+  EXPECT_TRUE(std::adjacent_find(points.begin(), points.end()) == points.end()) << "duplicated vertex";
+
+  EXPECT_FALSE(PMP::does_self_intersect(mesh));
+  EXPECT_TRUE(PMP::is_outward_oriented(mesh));
+
+  const bm::Cad_model_statistics s = bm::cad_model_statistics(mesh);
+  EXPECT_EQ(s.boundary_loops, 0u);
+  EXPECT_EQ(s.genus, genus);
+  EXPECT_EQ(s.euler_characteristic, 2 - 2 * genus);
+}
+
+bool same_mesh(const Mesh& a, const Mesh& b)
+{
+  if(a.number_of_vertices() != b.number_of_vertices() || a.number_of_faces() != b.number_of_faces())
+    return false;
+  for(Mesh::Vertex_index v : a.vertices())
+    if(a.point(v) != b.point(v))
+      return false;
+  for(Mesh::Face_index f : a.faces())
+    if(face_vertices(a, f) != face_vertices(b, f))
+      return false;
+  return true;
+}
+
+TEST(CadLikeModels, DefaultPlateIsValidAndFullOfSlivers)
+{
+  const bm::Perforated_plate_parameters p = default_model_parameters();
+  Mesh mesh;
+  bm::make_perforated_plate(mesh, p);
+  expect_valid_closed_model(mesh, 7);
+
+  const bm::Cad_model_statistics s = bm::cad_model_statistics(mesh);
+  EXPECT_GE(s.faces, 2000u);
+  EXPECT_LE(s.faces, 10000u);
+  EXPECT_GT(s.share_min_angle_below_10, 0.6);
+  EXPECT_GT(s.share_min_angle_below_1, 0.);
+  EXPECT_LT(s.min_angle_degrees, 1.);
+  EXPECT_GT(s.min_angle_degrees, 0.);
+}
+
+TEST(CadLikeModels, ExplicitHolesSharpCornersCoarseCircles)
+{
+  bm::Perforated_plate_parameters p;
+  p.length = 50.;
+  p.width = 30.;
+  p.thickness = 2.;
+  p.corner_radius = 0.;
+  p.segments_per_circle = 8;
+  // Vertically aligned holes of equal radius: many collinear vertex triples to avoid.
+  p.holes = {{-15., 0., 4.}, {0., 0., 4.}, {15., 0., 4.}, {0., 10., 2.}};
+  Mesh mesh;
+  bm::make_perforated_plate(mesh, p);
+  expect_valid_closed_model(mesh, 4);
+}
+
+TEST(CadLikeModels, ManySmallRandomHoles)
+{
+  bm::Perforated_plate_parameters p;
+  p.length = 60.;
+  p.width = 40.;
+  p.thickness = 3.;
+  p.corner_radius = 5.;
+  p.segments_per_circle = 24;
+  p.number_of_random_holes = 15;
+  p.min_hole_radius = 1.;
+  p.max_hole_radius = 3.;
+  p.min_clearance = 1.;
+  p.seed = 42;
+  Mesh mesh;
+  bm::make_perforated_plate(mesh, p);
+  expect_valid_closed_model(mesh, 15);
+}
+
+TEST(CadLikeModels, SeveralSeedsAndNoHoles)
+{
+  for(std::uint64_t seed = 2; seed < 8; ++seed) {
+    bm::Perforated_plate_parameters p = default_model_parameters();
+    p.segments_per_circle = 32;
+    p.seed = seed;
+    Mesh mesh;
+    bm::make_perforated_plate(mesh, p);
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    expect_valid_closed_model(mesh, 7);
+  }
+  bm::Perforated_plate_parameters p = default_model_parameters();
+  p.number_of_random_holes = 0;
+  Mesh mesh;
+  bm::make_perforated_plate(mesh, p);
+  expect_valid_closed_model(mesh, 0);
+}
+
+TEST(CadLikeModels, Deterministic)
+{
+  const bm::Perforated_plate_parameters p = default_model_parameters();
+  Mesh a, b;
+  bm::make_perforated_plate(a, p);
+  bm::make_perforated_plate(b, p);
+  EXPECT_TRUE(same_mesh(a, b));
+
+  bm::Perforated_plate_parameters q = p;
+  q.seed = 4;
+  Mesh c;
+  bm::make_perforated_plate(c, q);
+  EXPECT_FALSE(same_mesh(a, c));
+}
+
+TEST(CadLikeModels, InvalidParametersAreRefused)
+{
+  Mesh mesh;
+  bm::Perforated_plate_parameters p = default_model_parameters();
+  p.thickness = -1.;
+  EXPECT_THROW(bm::make_perforated_plate(mesh, p), std::invalid_argument);
+
+  p = default_model_parameters();
+  p.corner_radius = 40.;
+  EXPECT_THROW(bm::make_perforated_plate(mesh, p), std::invalid_argument);
+
+  p = default_model_parameters();
+  p.segments_per_circle = 3;
+  EXPECT_THROW(bm::make_perforated_plate(mesh, p), std::invalid_argument);
+
+  p = default_model_parameters();
+  p.holes = {{0., 0., 10.}, {5., 0., 10.}};
+  EXPECT_THROW(bm::make_perforated_plate(mesh, p), std::invalid_argument);
+
+  p = default_model_parameters();
+  p.number_of_random_holes = 200;
+  p.max_placement_attempts = 2000;
+  EXPECT_THROW(bm::make_perforated_plate(mesh, p), std::runtime_error);
+}
+
+TEST(CadLikeModels, SliverFanDisc)
+{
+  Mesh mesh;
+  bm::make_sliver_fan_disc(mesh, 64, 2.);
+  EXPECT_EQ(mesh.number_of_vertices(), 64u);
+  EXPECT_EQ(mesh.number_of_faces(), 62u);
+  EXPECT_FALSE(CGAL::is_closed(mesh));
+  for(Mesh::Face_index f : mesh.faces()) {
+    const std::array<std::size_t, 3> v = face_vertices(mesh, f);
+    EXPECT_FALSE(CGAL::collinear(mesh.point(Mesh::Vertex_index(Mesh::size_type(v[0]))),
+                                 mesh.point(Mesh::Vertex_index(Mesh::size_type(v[1]))),
+                                 mesh.point(Mesh::Vertex_index(Mesh::size_type(v[2])))));
+  }
+  const bm::Cad_model_statistics s = bm::cad_model_statistics(mesh);
+  EXPECT_NEAR(s.min_angle_degrees, 180. / 64., 1e-9);
+  EXPECT_EQ(s.boundary_loops, 1u);
+  EXPECT_EQ(s.genus, 0);
+}
+
+// A stale default model (generator changed, file not regenerated) fails here.
+TEST(CadLikeModels, ShippedDefaultModelMatchesGenerator)
+{
+  const std::string path = std::string(CONFORMAL_REMESHING_EXAMPLE_DATA) + "/perforated_plate.off";
+  Mesh shipped;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(path, shipped)) << "cannot read " << path;
+  Mesh fresh;
+  bm::make_perforated_plate(fresh, default_model_parameters());
+
+  ASSERT_EQ(shipped.number_of_vertices(), fresh.number_of_vertices());
+  ASSERT_EQ(shipped.number_of_faces(), fresh.number_of_faces());
+  for(Mesh::Vertex_index v : fresh.vertices()) {
+    const Point_3 &a = shipped.point(v), &b = fresh.point(v);
+    for(int i = 0; i < 3; ++i)
+      ASSERT_LE(std::abs(a[i] - b[i]), 1e-12 * std::max(1., std::abs(b[i])))
+        << "vertex " << v << ", coordinate " << i;
+  }
+  for(Mesh::Face_index f : fresh.faces())
+    ASSERT_EQ(face_vertices(shipped, f), face_vertices(fresh, f)) << "face " << f;
+  expect_valid_closed_model(shipped, 7);
+}
+
+} // namespace
