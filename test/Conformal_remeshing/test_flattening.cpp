@@ -1,8 +1,15 @@
 // Tests of the planar embedding check, and of flattenings of strongly concave patches.
 
+#include <CGAL/Conformal_remeshing/IO/read_mesh.h>
 #include <CGAL/Conformal_remeshing/check_planar_embedding.h>
+#include <CGAL/Conformal_remeshing/conformal_flatten.h>
 
+#include "cad_like_models.h"
 #include "test_surfaces.h"
+
+#include <CGAL/Delaunay_triangulation_2.h>
+#include <CGAL/Random.h>
+#include <CGAL/boost/graph/generators.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
@@ -13,6 +20,8 @@
 #include <gtest/gtest.h>
 
 #include <array>
+#include <complex>
+#include <string>
 #include <vector>
 
 namespace CR = CGAL::Conformal_remeshing;
@@ -115,4 +124,294 @@ TEST(PlanarEmbedding, LscmOverlapsOnAStronglyConcaveStrip)
       EXPECT_GT(r.boundary_intersections, 0u) << r.summary();
     }
   }
+}
+
+// --- conformal_flatten ------------------------------------------------------------------------
+
+namespace {
+
+// Expects a successful flattening whose final triangulation is an embedding, counting
+// overlapping triangle pairs too.
+void expect_embedding(const CR::Conformal_flattening& f, std::size_t expected_holes)
+{
+  EXPECT_EQ(f.report.status, CR::Error_code::SUCCESS) << CR::error_message(f.report.status);
+  EXPECT_TRUE(f.report.converged);
+  EXPECT_LT(f.report.curvature_error, 1e-9);
+  EXPECT_TRUE(f.report.embedding.is_embedding()) << f.report.embedding.summary();
+  EXPECT_EQ(f.holes.size(), expected_holes);
+
+  std::vector<std::array<std::size_t, 3> > triangles;
+  for(const auto& t : f.triangles)
+    triangles.push_back({{std::size_t(t[0]), std::size_t(t[1]), std::size_t(t[2])}});
+  const CR::Planar_embedding_report full = CR::check_planar_embedding(f.layout, triangles, {}, true);
+  EXPECT_EQ(full.non_positive_faces, 0u);
+  EXPECT_EQ(full.overlapping_face_pairs, 0u);
+}
+
+// The largest distance between uv and the best similarity image of the planar input points
+// (least squares in complex numbers: w = a z + b), relative to the input's diameter.
+double similarity_error(const std::vector<std::complex<double> >& z, const std::vector<std::complex<double> >& w)
+{
+  std::complex<double> mz(0), mw(0);
+  for(std::size_t i = 0; i < z.size(); ++i)
+  {
+    mz += z[i];
+    mw += w[i];
+  }
+  mz /= double(z.size());
+  mw /= double(z.size());
+  std::complex<double> num(0);
+  double den = 0.;
+  for(std::size_t i = 0; i < z.size(); ++i)
+  {
+    num += std::conj(z[i] - mz) * (w[i] - mw);
+    den += std::norm(z[i] - mz);
+  }
+  const std::complex<double> a = num / den;
+  double error = 0., diameter = 0.;
+  for(std::size_t i = 0; i < z.size(); ++i)
+  {
+    error = (std::max)(error, std::abs(a * (z[i] - mz) + mw - w[i]) / std::abs(a));
+    diameter = (std::max)(diameter, 2. * std::abs(z[i] - mz));
+  }
+  return error / diameter;
+}
+
+} // namespace
+
+TEST(ConformalFlatten, ConcaveStripIsEmbeddedWhereLscmOverlaps)
+{
+  Mesh mesh;
+  bm::Wavy_c_strip_parameters p;
+  p.amplitude = 0.6;
+  bm::make_wavy_c_strip(mesh, p);
+  const CR::Conformal_flattening f = CR::conformal_flatten(mesh);
+  expect_embedding(f, 0);
+  // The uv of the input vertices, as a parameterization of the input triangles, has no overlap either.
+  auto uv = mesh.add_property_map<Mesh::Vertex_index, Point_2>("v:uv").first;
+  for(auto v : mesh.vertices())
+    uv[v] = f.uv[v.idx()];
+  const CR::Planar_embedding_report input = CR::check_parameterization(mesh, uv, true);
+  EXPECT_TRUE(input.is_embedding()) << input.summary();
+  EXPECT_EQ(input.overlapping_face_pairs, 0u);
+}
+
+TEST(ConformalFlatten, PlanarRoundDiscIsASimilarity)
+{
+  // A disc whose boundary vertices lie on a circle, triangulated badly: Delaunay on random
+  // points, then every other flippable edge flipped. Welding to the annulus changes nothing
+  // there, so the flattening must be a similarity up to rounding.
+  typedef CGAL::Delaunay_triangulation_2<K> DT;
+  CGAL::Random random(7);
+  DT dt;
+  for(int i = 0; i < 64; ++i)
+    dt.insert(K::Point_2(std::cos(2 * CGAL_PI * i / 64), std::sin(2 * CGAL_PI * i / 64)));
+  for(int i = 0; i < 300; ++i)
+  {
+    const double r = 0.95 * std::sqrt(random.get_double()), t = 2 * CGAL_PI * random.get_double();
+    dt.insert(K::Point_2(r * std::cos(t), r * std::sin(t)));
+  }
+  int flipped = 0;
+  for(auto e = dt.finite_edges_begin(); e != dt.finite_edges_end(); ++e)
+  {
+    const DT::Face_handle f = e->first, g = f->neighbor(e->second);
+    if(dt.is_infinite(f) || dt.is_infinite(g) || (flipped++ % 2))
+      continue;
+    const K::Point_2 &a = f->vertex(e->second)->point(), &b = f->vertex(f->cw(e->second))->point(),
+                     &c = g->vertex(g->index(f))->point(), &d = f->vertex(f->ccw(e->second))->point();
+    if(CGAL::orientation(a, b, c) == CGAL::POSITIVE && CGAL::orientation(c, d, a) == CGAL::POSITIVE)
+      dt.flip(f, e->second);
+  }
+  Mesh mesh;
+  std::map<DT::Vertex_handle, Mesh::Vertex_index> vertex;
+  for(auto v = dt.finite_vertices_begin(); v != dt.finite_vertices_end(); ++v)
+    vertex[v] = mesh.add_vertex(K::Point_3(v->point().x(), v->point().y(), 0.));
+  for(auto f = dt.finite_faces_begin(); f != dt.finite_faces_end(); ++f)
+    mesh.add_face(vertex[f->vertex(0)], vertex[f->vertex(1)], vertex[f->vertex(2)]);
+  ASSERT_LT(CR::mesh_quality(mesh).minimum_angle.min, 5.); // the triangulation is bad indeed
+
+  const CR::Conformal_flattening f = CR::conformal_flatten(mesh);
+  expect_embedding(f, 0);
+  std::vector<std::complex<double> > z, w;
+  for(auto v : mesh.vertices())
+  {
+    z.emplace_back(mesh.point(v).x(), mesh.point(v).y());
+    w.emplace_back(f.uv[v.idx()].x(), f.uv[v.idx()].y());
+  }
+  EXPECT_LT(similarity_error(z, w), 1e-9);
+}
+
+TEST(ConformalFlatten, SphericalCapIsCloseToTheStereographicProjection)
+{
+  // Stereographic projection maps the cap conformally onto a disc, and the vertex-scaling
+  // conformal equivalence of a mesh inscribed in a sphere is Moebius invariant, so with the
+  // cap's own (Delaunay) triangulation the discrete flattening would be the stereographic
+  // projection exactly. The flow's Euclidean flips during Newton steps make the result depend
+  // on the path (Ptolemy flips would not): measured errors range from 1e-13 to 1.6e-3 relative
+  // to the diameter, depending on the resolution. The bound below is that measurement.
+  for(int level : {1, 2, 4})
+  {
+    Mesh mesh;
+    bm::make_spherical_cap(mesh, 120., 8 * level, 24 * level);
+    const CR::Conformal_flattening f = CR::conformal_flatten(mesh);
+    expect_embedding(f, 0);
+    std::vector<std::complex<double> > z, w;
+    for(auto v : mesh.vertices())
+    {
+      const K::Point_3& p = mesh.point(v);
+      z.emplace_back(p.x() / (1 + p.z()), p.y() / (1 + p.z()));
+      w.emplace_back(f.uv[v.idx()].x(), f.uv[v.idx()].y());
+    }
+    EXPECT_LT(similarity_error(z, w), 5e-3) << "level " << level;
+  }
+}
+
+TEST(ConformalFlatten, ConformalDistortionShrinksUnderRefinement)
+{
+  // On a non-spherical surface (an ellipsoidal cap), the piecewise linear map from the input
+  // triangles to their uv images is only approximately conformal; its mean quasi-conformal
+  // distortion (ratio of the singular values of each triangle's affine map, minus 1) must go
+  // to zero at least linearly in the mesh size.
+  std::vector<double> distortion;
+  for(int level : {1, 2, 4})
+  {
+    Mesh mesh;
+    bm::make_spherical_cap(mesh, 100., 8 * level, 24 * level);
+    for(auto v : mesh.vertices())
+      mesh.point(v) = K::Point_3(1.5 * mesh.point(v).x(), mesh.point(v).y(), 0.7 * mesh.point(v).z());
+    const CR::Conformal_flattening f = CR::conformal_flatten(mesh);
+    expect_embedding(f, 0);
+    double sum = 0.;
+    for(auto face : mesh.faces())
+    {
+      const auto h = mesh.halfedge(face);
+      const Mesh::Vertex_index v[3] = {mesh.source(h), mesh.target(h), mesh.target(mesh.next(h))};
+      const K::Vector_3 e1 = mesh.point(v[1]) - mesh.point(v[0]), e2 = mesh.point(v[2]) - mesh.point(v[0]);
+      const K::Vector_3 x = e1 / std::sqrt(e1.squared_length());
+      const K::Vector_3 n = CGAL::cross_product(e1, e2);
+      K::Vector_3 y = CGAL::cross_product(n, x);
+      y = y / std::sqrt(y.squared_length());
+      // J maps the triangle in its own plane (columns q1, q2) onto its uv image (columns w1, w2).
+      const double q11 = e1 * x, q12 = e2 * x, q21 = 0., q22 = e2 * y;
+      const K::Vector_2 w1 = f.uv[v[1].idx()] - f.uv[v[0].idx()], w2 = f.uv[v[2].idx()] - f.uv[v[0].idx()];
+      const double det_q = q11 * q22 - q12 * q21;
+      const double a = (w1.x() * q22 - w2.x() * q21) / det_q, b = (w2.x() * q11 - w1.x() * q12) / det_q;
+      const double c = (w1.y() * q22 - w2.y() * q21) / det_q, d = (w2.y() * q11 - w1.y() * q12) / det_q;
+      const double frobenius = a * a + b * b + c * c + d * d, det = a * d - b * c;
+      const double root = std::sqrt((std::max)(0., frobenius * frobenius - 4 * det * det));
+      sum += std::sqrt((frobenius + root) / (frobenius - root)) - 1.;
+    }
+    distortion.push_back(sum / double(mesh.number_of_faces()));
+  }
+  EXPECT_LT(distortion[1], 0.6 * distortion[0]) << distortion[0] << " " << distortion[1];
+  EXPECT_LT(distortion[2], 0.6 * distortion[1]) << distortion[1] << " " << distortion[2];
+}
+
+TEST(ConformalFlatten, CadLikeSheetsWithManyHoles)
+{
+  // Sheets tessellated like CAD faces (fans of slivers), flat and bent, with 1, 10 and 100 holes.
+  for(int holes : {1, 10, 100})
+    for(double bend : {0., 0.3})
+    {
+      bm::Perforated_plate_parameters p;
+      p.number_of_random_holes = holes;
+      if(holes == 100)
+      {
+        p.length = 400;
+        p.width = 300;
+        p.min_hole_radius = 2;
+        p.max_hole_radius = 6;
+        p.min_clearance = 2;
+        p.segments_per_circle = 32;
+      }
+      Mesh mesh;
+      bm::make_perforated_sheet(mesh, p, bend);
+      ASSERT_LT(CR::mesh_quality(mesh).minimum_angle.min, 1.);
+      SCOPED_TRACE(std::to_string(holes) + " holes, bend " + std::to_string(bend));
+      const CR::Conformal_flattening f = CR::conformal_flatten(mesh);
+      expect_embedding(f, std::size_t(holes));
+    }
+}
+
+TEST(ConformalFlatten, CgalMeshesWithBoundaries)
+{
+  const std::string meshes = std::string(CONFORMAL_REMESHING_CGAL_DATA) + "/meshes/";
+  for(const auto& m : std::vector<std::pair<std::string, std::size_t> >{
+        {"mech-holes-shark.off", 3}, {"pig.off", 6}, {"holes.off", 6}, {"lion.off", 4}, {"nefertiti.off", 0}})
+  {
+    SCOPED_TRACE(m.first);
+    Mesh mesh;
+    ASSERT_TRUE(CR::read_and_check_mesh(meshes + m.first, mesh).is_valid());
+    expect_embedding(CR::conformal_flatten(mesh), m.second);
+  }
+}
+
+TEST(ConformalFlatten, WeldedBoundaryCanBeChosen)
+{
+  Mesh mesh;
+  bm::Perforated_plate_parameters p;
+  p.number_of_random_holes = 3;
+  bm::make_perforated_sheet(mesh, p, 0.3);
+  // Weld a hole instead of the outer rim: the rim becomes one of the holes of the domain.
+  Mesh::Halfedge_index hole_border;
+  for(auto h : mesh.halfedges())
+    if(mesh.is_border(h) && std::abs(mesh.point(mesh.source(h)).x()) < 50)
+      hole_border = h;
+  const CR::Conformal_flattening f = CR::conformal_flatten(mesh, CR::parameters::welded_boundary(hole_border));
+  expect_embedding(f, 3);
+  bool rim_is_a_hole = false;
+  for(const auto& hole : f.holes)
+    for(const CR::Domain_point& q : hole)
+      rim_is_a_hole = rim_is_a_hole || std::abs(q.point.x()) > 59.9;
+  EXPECT_TRUE(rim_is_a_hole);
+}
+
+TEST(ConformalFlatten, DomainBoundaryPointsLieOnTheInputBoundary)
+{
+  Mesh mesh;
+  bm::make_wavy_c_strip(mesh);
+  const CR::Conformal_flattening f = CR::conformal_flatten(mesh);
+  ASSERT_FALSE(f.outer_boundary.empty());
+  for(const CR::Domain_point& q : f.outer_boundary)
+  {
+    // The surface point is the input face's point at the given barycentric coordinates.
+    const auto h = mesh.halfedge(Mesh::Face_index(Mesh::size_type(q.input_face)));
+    const K::Point_3 x = CGAL::barycenter(mesh.point(mesh.source(h)), q.input_coordinates[0], mesh.point(mesh.target(h)),
+                                          q.input_coordinates[1], mesh.point(mesh.target(mesh.next(h))), q.input_coordinates[2]);
+    EXPECT_LT(std::sqrt(CGAL::squared_distance(x, q.point)), 1e-12);
+  }
+}
+
+TEST(ConformalFlatten, BadInputIsRefusedWithTheReason)
+{
+  auto expect_error = [](const Mesh& mesh, const std::string& reason) {
+    try
+    {
+      CR::conformal_flatten(mesh);
+      ADD_FAILURE() << "no error, expected: " << reason;
+    }
+    catch(const CR::Error& e)
+    {
+      EXPECT_EQ(e.code(), CR::Error_code::INVALID_INPUT);
+      EXPECT_NE(std::string(e.what()).find(reason), std::string::npos) << e.what();
+    }
+  };
+  Mesh closed;
+  CGAL::make_tetrahedron(K::Point_3(0, 0, 0), K::Point_3(1, 0, 0), K::Point_3(0, 1, 0), K::Point_3(0, 0, 1), closed);
+  expect_error(closed, "closed");
+
+  Mesh plate; // a closed plate with 7 holes: genus 7
+  bm::make_perforated_plate(plate, bm::Perforated_plate_parameters());
+  expect_error(plate, "genus 7");
+
+  Mesh two; // two separate triangles
+  two.add_face(two.add_vertex(K::Point_3(0, 0, 0)), two.add_vertex(K::Point_3(1, 0, 0)), two.add_vertex(K::Point_3(0, 1, 0)));
+  two.add_face(two.add_vertex(K::Point_3(5, 0, 0)), two.add_vertex(K::Point_3(6, 0, 0)), two.add_vertex(K::Point_3(5, 1, 0)));
+  expect_error(two, "2 connected components");
+
+  Mesh bowtie; // two triangles sharing one vertex
+  const auto c = bowtie.add_vertex(K::Point_3(0, 0, 0));
+  bowtie.add_face(c, bowtie.add_vertex(K::Point_3(1, 0, 0)), bowtie.add_vertex(K::Point_3(1, 1, 0)));
+  bowtie.add_face(c, bowtie.add_vertex(K::Point_3(-1, 0, 0)), bowtie.add_vertex(K::Point_3(-1, -1, 0)));
+  expect_error(bowtie, "non-manifold vertex");
 }

@@ -445,8 +445,17 @@ inline std::vector<Circular_hole> perforated_plate_holes(const Perforated_plate_
 ///
 /// `mesh` is cleared first. The result depends only on `p` (no time, no unordered containers).
 /// Throws like `perforated_plate_holes()`, and `std::runtime_error` if the triangulation fails.
-template <class Point_3>
-void make_perforated_plate(CGAL::Surface_mesh<Point_3>& mesh, const Perforated_plate_parameters& p)
+/// The planar outline of a perforated plate: the outer loop counterclockwise, then each hole
+/// clockwise, so that the material is on the left of every boundary edge.
+struct Plate_outline
+{
+  std::vector<internal::Planar_point> points;
+  std::vector<std::size_t> outer;
+  std::vector<std::vector<std::size_t> > hole_loops;
+};
+
+/// Builds the outline of the plate of `p` (throws like `perforated_plate_holes()`).
+inline Plate_outline perforated_plate_outline(const Perforated_plate_parameters& p)
 {
   typedef internal::Planar_point Planar_point;
   const std::vector<Circular_hole> holes = perforated_plate_holes(p);
@@ -454,8 +463,9 @@ void make_perforated_plate(CGAL::Surface_mesh<Point_3>& mesh, const Perforated_p
 
   // Planar boundary: outer loop counterclockwise, then each hole clockwise, so that the plate's
   // material is on the left of every boundary edge.
-  std::vector<Planar_point> points;
-  std::vector<std::size_t> outer;
+  Plate_outline outline;
+  std::vector<Planar_point>& points = outline.points;
+  std::vector<std::size_t>& outer = outline.outer;
   const double hx = p.length / 2., hy = p.width / 2., r = p.corner_radius;
   const long quarter = (segments + 3) / 4;
   const double corner_x[4] = {hx - r, hx - r, -hx + r, -hx + r};
@@ -473,7 +483,7 @@ void make_perforated_plate(CGAL::Surface_mesh<Point_3>& mesh, const Perforated_p
       points.push_back(Planar_point(corner_x[c] + r * u.first, corner_y[c] + r * u.second));
     }
   }
-  std::vector<std::vector<std::size_t> > hole_loops;
+  std::vector<std::vector<std::size_t> >& hole_loops = outline.hole_loops;
   for(const Circular_hole& h : holes) {
     std::vector<std::size_t> loop;
     for(long k = 0; k < segments; ++k) {
@@ -483,6 +493,18 @@ void make_perforated_plate(CGAL::Surface_mesh<Point_3>& mesh, const Perforated_p
     }
     hole_loops.push_back(loop);
   }
+
+  return outline;
+}
+
+template <class Point_3>
+void make_perforated_plate(CGAL::Surface_mesh<Point_3>& mesh, const Perforated_plate_parameters& p)
+{
+  const Plate_outline outline = perforated_plate_outline(p);
+  const std::vector<internal::Planar_point>& points = outline.points;
+  const std::vector<std::size_t>& outer = outline.outer;
+  const std::vector<std::vector<std::size_t> >& hole_loops = outline.hole_loops;
+  typedef internal::Planar_point Planar_point;
 
   // CAD exporters triangulate each face on its own: the bottom starts its fans elsewhere.
   const std::vector<std::array<std::size_t, 3> > top =
@@ -518,6 +540,27 @@ void make_perforated_plate(CGAL::Surface_mesh<Point_3>& mesh, const Perforated_p
   add_wall(outer);
   for(const std::vector<std::size_t>& loop : hole_loops)
     add_wall(loop);
+}
+
+/// Builds the top face of the plate of `p` alone: an open sheet of genus 0 with one boundary
+/// loop per hole plus the outer one, triangulated like `make_perforated_plate()`'s faces (fans of
+/// slivers). With `bend != 0` the sheet is bent around the y axis, `z = bend * x^2 / (length / 2)`,
+/// so that it is not flat.
+template <class Point_3>
+void make_perforated_sheet(CGAL::Surface_mesh<Point_3>& mesh, const Perforated_plate_parameters& p, double bend = 0.)
+{
+  const Plate_outline outline = perforated_plate_outline(p);
+  const std::vector<std::array<std::size_t, 3> > triangles =
+    internal::Fan_triangulator(outline.points, outline.outer, outline.hole_loops).run(0);
+  mesh.clear();
+  typedef typename CGAL::Surface_mesh<Point_3>::Vertex_index Vertex_index;
+  std::vector<Vertex_index> vertex;
+  const double half = p.length / 2.;
+  for(const internal::Planar_point& q : outline.points)
+    vertex.push_back(mesh.add_vertex(Point_3(q.x(), q.y(), bend * q.x() * q.x() / half)));
+  for(const std::array<std::size_t, 3>& t : triangles)
+    if(mesh.add_face(vertex[t[0]], vertex[t[1]], vertex[t[2]]) == CGAL::Surface_mesh<Point_3>::null_face())
+      throw std::runtime_error("make_perforated_sheet: non-manifold triangle (internal error)");
 }
 
 /// Builds an open flat disc (one boundary loop, genus 0) of radius `radius` in the plane z = 0,

@@ -43,6 +43,26 @@ inline void write_file_atomically(const std::string& path, const std::function<b
   }
 }
 
+// Calls `write(temporary_path)`, which writes a whole file at that path (with the same
+// extension as `path`, for writers that choose the format by extension), then renames it to
+// `path`. Throws std::runtime_error naming the file on any failure.
+inline void write_file_atomically_at(const std::string& path, const std::function<bool(const std::string&)>& write)
+{
+  const std::string::size_type dot = path.find_last_of('.');
+  const std::string temporary = path + ".part" + (dot == std::string::npos ? std::string() : path.substr(dot));
+  if(!write(temporary))
+  {
+    std::remove(temporary.c_str());
+    throw std::runtime_error("cannot write '" + path + "'");
+  }
+  if(std::rename(temporary.c_str(), path.c_str()) != 0)
+  {
+    const std::string reason = std::strerror(errno);
+    std::remove(temporary.c_str());
+    throw std::runtime_error("cannot write '" + path + "': " + reason);
+  }
+}
+
 inline void write_file_atomically(const std::string& path, const std::string& content)
 {
   write_file_atomically(path, [&](std::ostream& out) { out << content; return bool(out); });

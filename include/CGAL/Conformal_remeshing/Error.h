@@ -26,7 +26,8 @@ enum class Error_code
   GAUSS_BONNET_VIOLATED,  ///< target curvatures do not sum to 2&pi; times the Euler characteristic
   NOT_CONVERGED,          ///< an iterative solver stopped before reaching its tolerance
   LINEAR_SOLVER_FAILED,   ///< a sparse factorization or solve failed
-  DEGENERATE_METRIC       ///< edge lengths violate the triangle inequality
+  DEGENERATE_METRIC,      ///< edge lengths violate the triangle inequality
+  NOT_AN_EMBEDDING        ///< a planar image folds or overlaps (found with exact predicates)
 };
 
 /// \ingroup PkgConformalRemeshingRef
@@ -43,6 +44,7 @@ inline const char* error_message(Error_code code)
     case Error_code::NOT_CONVERGED: return "did not converge";
     case Error_code::LINEAR_SOLVER_FAILED: return "sparse linear solver failed";
     case Error_code::DEGENERATE_METRIC: return "edge lengths violate the triangle inequality";
+    case Error_code::NOT_AN_EMBEDDING: return "the planar image is not an embedding";
   }
   return "unknown error";
 }

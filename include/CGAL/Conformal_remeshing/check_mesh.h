@@ -212,15 +212,15 @@ std::vector<Component_topology> component_topologies(const FaceGraph& mesh)
 ///     \cgalParamDefault{a \cgal Kernel deduced from the point type}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
-template <typename FaceGraph, typename NamedParameters = parameters::Default_named_parameters>
+template <typename FaceGraph, typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Mesh_check_report check_mesh(const FaceGraph& mesh,
-                             const NamedParameters& np = parameters::default_values())
+                             const NamedParameters& np = CGAL::parameters::default_values())
 {
   typedef typename GetGeomTraits<FaceGraph, NamedParameters>::type Kernel;
   typedef typename boost::graph_traits<FaceGraph>::vertex_descriptor vertex_descriptor;
   typedef typename boost::graph_traits<FaceGraph>::face_descriptor face_descriptor;
 
-  auto vpm = parameters::choose_parameter(parameters::get_parameter(np, internal_np::vertex_point),
+  auto vpm = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
                                           get_const_property_map(vertex_point, mesh));
 
   // The soup view of the mesh lets one implementation serve both entry points.

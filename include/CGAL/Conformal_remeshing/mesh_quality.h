@@ -188,11 +188,11 @@ Triangle_quality triangle_quality(const Point_3& p, const Point_3& q, const Poin
 /// \cgalNamedParamsEnd
 ///
 /// \throws Error with `Error_code::INVALID_INPUT` if `mesh` has a face that is not a triangle.
-template <typename TriangleMesh, typename NamedParameters = parameters::Default_named_parameters>
+template <typename TriangleMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Mesh_quality_report mesh_quality(const TriangleMesh& mesh,
-                                 const NamedParameters& np = parameters::default_values())
+                                 const NamedParameters& np = CGAL::parameters::default_values())
 {
-  auto vpm = parameters::choose_parameter(parameters::get_parameter(np, internal_np::vertex_point),
+  auto vpm = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
                                           get_const_property_map(vertex_point, mesh));
   if(!is_triangle_mesh(mesh))
     throw Error(Error_code::INVALID_INPUT, "mesh_quality() needs a triangle mesh; triangulate the faces first");
@@ -320,19 +320,19 @@ struct Reference_comparison
 ///
 /// \throws Error with `Error_code::INVALID_INPUT` if a mesh is empty or not a triangle mesh.
 template <typename Concurrency_tag = CGAL::Parallel_if_available_tag, typename TriangleMesh,
-          typename NamedParameters = parameters::Default_named_parameters>
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Reference_comparison compare_to_reference(const TriangleMesh& mesh, const TriangleMesh& reference,
-                                          const NamedParameters& np = parameters::default_values())
+                                          const NamedParameters& np = CGAL::parameters::default_values())
 {
   for(const TriangleMesh* m : {&mesh, &reference})
     if(is_empty(*m) || faces(*m).empty() || !is_triangle_mesh(*m))
       throw Error(Error_code::INVALID_INPUT, "compare_to_reference() needs two non-empty triangle meshes");
 
   namespace PMP = CGAL::Polygon_mesh_processing;
-  const unsigned int seed = parameters::choose_parameter(parameters::get_parameter(np, internal_np::random_seed), 0u);
+  const unsigned int seed = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::random_seed), 0u);
   auto samples_on = [&](const TriangleMesh& m) {
     const std::size_t fallback = (std::max<std::size_t>)(100000, 4 * num_faces(m));
-    return parameters::choose_parameter(parameters::get_parameter(np, internal_np::number_of_points_on_faces), fallback);
+    return CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::number_of_points_on_faces), fallback);
   };
 
   Reference_comparison result;
@@ -342,10 +342,10 @@ Reference_comparison compare_to_reference(const TriangleMesh& mesh, const Triang
   const double unit = result.reference_diagonal > 0. ? result.reference_diagonal : 1.;
   result.relative_distance_to_reference =
     PMP::approximate_Hausdorff_distance<Concurrency_tag>(
-      mesh, reference, parameters::number_of_points_on_faces(samples_on(mesh)).random_seed(seed)) / unit;
+      mesh, reference, CGAL::parameters::number_of_points_on_faces(samples_on(mesh)).random_seed(seed)) / unit;
   result.relative_distance_from_reference =
     PMP::approximate_Hausdorff_distance<Concurrency_tag>(
-      reference, mesh, parameters::number_of_points_on_faces(samples_on(reference)).random_seed(seed)) / unit;
+      reference, mesh, CGAL::parameters::number_of_points_on_faces(samples_on(reference)).random_seed(seed)) / unit;
   const double reference_area = CGAL::to_double(PMP::area(reference));
   result.area_ratio = reference_area > 0. ? CGAL::to_double(PMP::area(mesh)) / reference_area
                                           : std::numeric_limits<double>::infinity();

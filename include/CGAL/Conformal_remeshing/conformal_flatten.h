@@ -1,0 +1,461 @@
+// Copyright (c) 2026 CGAL Conformal Remeshing contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Flattening of a genus-0 patch with any number of boundary loops onto a planar domain, with no
+// overlap anywhere: conformal welding, discrete Ricci flow, layout, exact embedding check.
+
+#ifndef CGAL_CONFORMAL_REMESHING_CONFORMAL_FLATTEN_H
+#define CGAL_CONFORMAL_REMESHING_CONFORMAL_FLATTEN_H
+
+#include <CGAL/Conformal_remeshing/Error.h>
+#include <CGAL/Conformal_remeshing/Intrinsic_triangulation.h>
+#include <CGAL/Conformal_remeshing/check_mesh.h>
+#include <CGAL/Conformal_remeshing/check_planar_embedding.h>
+#include <CGAL/Conformal_remeshing/discrete_ricci_flow.h>
+#include <CGAL/Conformal_remeshing/internal/named_parameters.h>
+#include <CGAL/Conformal_remeshing/internal/welding/weld.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <string>
+#include <vector>
+
+// Named parameters of `conformal_flatten()` (see its documentation):
+// - `welded_boundary(h)`: a border halfedge of the loop to weld (default: the longest loop);
+// - `annulus_inner_radius(delta)`: the annulus' inner radius, the outer one being 1 (default 0.3);
+// - `maximum_edge_length(l)`: input edges longer than `l` are split first (default: none).
+CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(welded_boundary)
+CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(annulus_inner_radius)
+CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(maximum_edge_length)
+
+namespace CGAL {
+namespace Conformal_remeshing {
+
+/// \ingroup PkgConformalRemeshingRef
+/// A point of the planar domain's boundary, with the surface point it is the image of.
+struct Domain_point
+{
+  Epick::Point_2 uv;
+  Epick::Point_3 point;
+  /// the input face holding `point`, and its barycentric coordinates there (in the corner order
+  /// of `CGAL::Polygon_mesh_processing::locate()`)
+  std::size_t input_face = 0;
+  std::array<double, 3> input_coordinates{{0., 0., 0.}};
+};
+
+/// \ingroup PkgConformalRemeshingRef
+/// What happened during `conformal_flatten()`.
+struct Flattening_report
+{
+  /// `SUCCESS`, `NOT_CONVERGED` (the flow stopped above its tolerance) or `NOT_AN_EMBEDDING`
+  Error_code status = Error_code::SUCCESS;
+  bool converged = false;
+  int iterations = 0;
+  double curvature_error = 0.;
+  std::size_t flips = 0;
+  std::size_t boundary_loops = 0;
+  /// boundary edges split at their midpoints before welding (the welded loop's edges are kept
+  /// below 1/32 of its length, so that the annulus' inscribed polygon is well defined)
+  std::size_t boundary_splits = 0;
+  /// input edges split at their midpoints because they were longer than `maximum_edge_length`
+  std::size_t edge_splits = 0;
+  std::size_t welded_vertices = 0;  ///< vertices of the welded disc (patch, fills, annulus)
+  /// range of the local scale of the map, planar length over 3D length of the input edges
+  double min_scale = 0.;
+  double max_scale = 0.;
+  /// the exact check of the final triangulation of the patch region with its boundary loops
+  Planar_embedding_report embedding;
+  /// input triangles whose corners' uv are not counterclockwise: the flat metric's triangulation
+  /// differs from the input's, so straight input triangles in uv may fold even though the map
+  /// itself is an embedding (informative only)
+  std::size_t folded_input_triangles_in_uv = 0;
+  double seconds_welding = 0., seconds_flow = 0., seconds_layout = 0., seconds_check = 0.;
+};
+
+/// \ingroup PkgConformalRemeshingRef
+/// The part of the welded disc a face of the flat triangulation belongs to.
+enum class Welded_region : unsigned char
+{
+  PATCH,     ///< the input patch
+  HOLE_FILL, ///< the cone fill of a hole
+  ANNULUS    ///< the welded annulus
+};
+
+/// \ingroup PkgConformalRemeshingRef
+/// The result of `conformal_flatten()`: the planar position of every input vertex, the planar
+/// domain with the surface points of its boundary, and the map from the plane to the surface.
+struct Conformal_flattening
+{
+  /// the planar position of input vertex `i` (by the vertex index map)
+  std::vector<Epick::Point_2> uv;
+  /// `log` of the local scale at each input vertex (mean over its input edges of planar over 3D length)
+  std::vector<double> conformal_factor;
+  /// the outer boundary of the domain, counterclockwise
+  std::vector<Domain_point> outer_boundary;
+  /// the holes, clockwise
+  std::vector<std::vector<Domain_point> > holes;
+  Flattening_report report;
+
+  /// The flat triangulation of the patch region: vertex positions and triangles
+  /// (counterclockwise). Together with `to_surface()` this is the plane to surface map.
+  std::vector<Epick::Point_2> layout;
+  std::vector<std::array<int, 3> > triangles;
+  std::vector<int> triangle_face; ///< the face of `triangulation` each of `triangles` is
+  /// the region of every face of `triangulation` (whose vertices are laid out in `layout`)
+  std::vector<Welded_region> face_region;
+
+  /// The surface point at barycentric coordinates `b` of `triangles[t]`: the input face and
+  /// barycentric coordinates there, through the bijective correspondence of the flow.
+  Domain_point to_surface(std::size_t t, const std::array<double, 3>& b) const
+  {
+    typedef Intrinsic_triangulation<double>::Face_location Location;
+    const Location initial = triangulation.to_input(Location{triangle_face[t], {{b[0], b[1], b[2]}}});
+    std::pair<int, std::array<double, 3> > on_patch = patch_location(initial.face, {{initial.coordinates[0], initial.coordinates[1], initial.coordinates[2]}});
+    Domain_point p;
+    p.uv = Epick::Point_2(b[0] * layout[triangles[t][0]].x() + b[1] * layout[triangles[t][1]].x() + b[2] * layout[triangles[t][2]].x(),
+                          b[0] * layout[triangles[t][0]].y() + b[1] * layout[triangles[t][1]].y() + b[2] * layout[triangles[t][2]].y());
+    const internal::welding::Vec3 x = patch.point_in_face(on_patch.first, on_patch.second);
+    p.point = Epick::Point_3(x[0], x[1], x[2]);
+    const auto location = patch.input_location(on_patch.first, on_patch.second);
+    p.input_face = std::size_t(location.first);
+    p.input_coordinates = location.second;
+    return p;
+  }
+
+  /// the final intrinsic triangulation of the welded disc and the (refined) patch it started from
+  Intrinsic_triangulation<double> triangulation;
+  internal::welding::Indexed_patch patch;
+  /// the faces of the welded disc before the flow (the patch's faces first)
+  std::vector<std::array<int, 3> > welded_faces;
+
+private:
+  // A location in a face of the welded disc, as a location in a patch face. A point of the patch
+  // that lies on a seam (a boundary or hole loop) may come back from the correspondence in the
+  // annulus or hole fill beside it, with weight only on seam vertices: it is moved across.
+  std::pair<int, std::array<double, 3> > patch_location(int face, std::array<double, 3> b) const
+  {
+    if(face < int(patch.faces.size()))
+      return {face, b};
+    const std::array<int, 3>& corners = welded_faces[face];
+    const int patch_vertices = int(patch.points.size());
+    double kept = 0.;
+    for(int c = 0; c < 3; ++c)
+    {
+      if(corners[c] >= patch_vertices)
+        b[c] = 0.;
+      kept += b[c];
+    }
+    std::array<double, 3> result{{0., 0., 0.}};
+    int best_face = -1, best_shared = 0;
+    for(std::size_t f = 0; f < patch.faces.size(); ++f) // rare: only points exactly on a seam
+    {
+      int shared = 0;
+      for(int c = 0; c < 3; ++c)
+        shared += (b[c] > 0. && std::find(patch.faces[f].begin(), patch.faces[f].end(), corners[c]) != patch.faces[f].end());
+      if(shared > best_shared)
+      {
+        best_shared = shared;
+        best_face = int(f);
+      }
+    }
+    if(best_face < 0 || kept <= 0.)
+      throw Error(Error_code::NOT_AN_EMBEDDING, "conformal_flatten: a point of the patch maps outside it (internal error)");
+    for(int c = 0; c < 3; ++c)
+      for(int d = 0; d < 3; ++d)
+        if(patch.faces[best_face][d] == corners[c])
+          result[d] += b[c] / kept;
+    return {best_face, result};
+  }
+};
+
+namespace internal {
+
+// Orders the boundary halfedges of a set of faces into loops, with the faces on the left.
+inline std::vector<std::vector<int> > region_boundary_loops(const Intrinsic_triangulation<double>& tri,
+                                                            const std::vector<char>& in_region)
+{
+  std::map<int, int> next_vertex; // along each loop, faces on the left
+  for(int f = 0; f < tri.number_of_faces(); ++f)
+  {
+    if(!in_region[f])
+      continue;
+    for(int c = 0; c < 3; ++c)
+    {
+      const int h = Intrinsic_triangulation<double>::halfedge(f, c);
+      const int twin = tri.opposite(h);
+      if(twin < 0 || !in_region[Intrinsic_triangulation<double>::face(twin)])
+        next_vertex[tri.source(h)] = tri.target(h);
+    }
+  }
+  std::vector<std::vector<int> > loops;
+  std::map<int, bool> used;
+  for(const auto& start : next_vertex)
+  {
+    if(used[start.first])
+      continue;
+    loops.emplace_back();
+    for(int v = start.first; !used[v]; v = next_vertex.at(v))
+    {
+      used[v] = true;
+      loops.back().push_back(v);
+    }
+  }
+  return loops;
+}
+
+} // namespace internal
+
+/// \ingroup PkgConformalRemeshingRef
+/// Flattens a genus-0 triangle mesh with at least one boundary loop onto a planar domain,
+/// conformally and with no overlap anywhere (paper Sec. 4.1-4.4).
+///
+/// One boundary loop (the longest by default) is welded to a planar annulus, every other loop
+/// is filled with a cone vertex, and the discrete Ricci flow makes the welded disc flat with
+/// the annulus' inner circle as a convex boundary (targets: 0 at every vertex, 2&pi;/n at the n
+/// vertices of the inner circle). The flat disc is laid out; a locally injective map of a disc
+/// with a convex boundary is an embedding, so the patch region is embedded, which is then
+/// verified with exact predicates. Welded loop edges longer than 1/32 of the loop are split at
+/// their midpoints first (exactly on the input edges).
+///
+/// \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{the 3D points of the vertices}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, mesh)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{welded_boundary}
+///     \cgalParamDescription{a border halfedge of the loop to weld (`Conformal_remeshing::parameters::welded_boundary()`)}
+///     \cgalParamDefault{a halfedge of the longest loop}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{annulus_inner_radius}
+///     \cgalParamDescription{the inner radius of the annulus (`Conformal_remeshing::parameters::annulus_inner_radius()`)}
+///     \cgalParamDefault{0.3 (measured by the welding_parameters benchmark)}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{maximum_edge_length}
+///     \cgalParamDescription{input edges longer than this are split at their midpoints first (exactly on the surface) so that long CAD slivers do not shear the map (`Conformal_remeshing::parameters::maximum_edge_length()`)}
+///     \cgalParamDefault{no splitting}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{number_of_iterations}
+///     \cgalParamDescription{the maximum number of Newton iterations of the flow}
+///     \cgalParamDefault{50}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{curvature_tolerance}
+///     \cgalParamDescription{the flow stops when the curvature error is below it (`Conformal_remeshing::parameters::curvature_tolerance()`)}
+///     \cgalParamDefault{1e-10}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \returns the flattening; `report.status` says whether the flow converged and the result is
+///          an embedding. A result that is not an embedding is never returned as a success.
+/// \throws Error with `Error_code::INVALID_INPUT` when the mesh is not a valid triangle mesh, not
+///         connected, not of genus 0, or has no boundary; the message names the problem.
+template <typename TriangleMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Conformal_flattening conformal_flatten(const TriangleMesh& mesh,
+                                       const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
+  typedef std::chrono::steady_clock Clock;
+  auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
+
+  // --- the input must be a patch: valid, connected, genus 0, with a boundary ----------------
+  const Mesh_check_report checks = check_mesh(mesh, np);
+  if(!checks.is_valid())
+    throw Error(Error_code::INVALID_INPUT, "conformal_flatten: invalid input mesh: " + checks.summary());
+  if(checks.components.size() != 1)
+    throw Error(Error_code::INVALID_INPUT, "conformal_flatten: the mesh has " + std::to_string(checks.components.size())
+                                             + " connected components; a patch has one");
+  if(checks.components[0].genus != 0)
+    throw Error(Error_code::INVALID_INPUT, "conformal_flatten: the mesh has genus " + std::to_string(checks.components[0].genus)
+                                             + "; a patch must have genus 0 (cut its handles first)");
+  if(checks.components[0].boundary_loops == 0)
+    throw Error(Error_code::INVALID_INPUT, "conformal_flatten: the mesh is closed; a patch needs at least one boundary loop");
+
+  const Clock::time_point start = Clock::now();
+  auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(vertex_point, mesh));
+  auto vim = CGAL::get_initialized_vertex_index_map(mesh, np);
+  auto fim = CGAL::get_initialized_face_index_map(mesh, np);
+  const double inner_radius = choose_parameter(get_parameter(np, internal_np::annulus_inner_radius), 0.3);
+  if(!(inner_radius > 0. && inner_radius < 1.))
+    throw Error(Error_code::INVALID_INPUT, "conformal_flatten: the annulus inner radius must be in (0, 1)");
+
+  Conformal_flattening result;
+  Flattening_report& report = result.report;
+  internal::welding::Indexed_patch& patch = result.patch;
+  patch = internal::welding::make_indexed_patch(mesh, vpm, vim, fim);
+  report.boundary_loops = patch.boundary_loops.size();
+
+  // The loop to weld: the one of the given border halfedge, or the longest.
+  std::size_t welded = 0;
+  const auto chosen = get_parameter(np, internal_np::welded_boundary);
+  if constexpr(!std::is_same<std::decay_t<decltype(chosen)>, CGAL::internal_np::Param_not_found>::value)
+  {
+    const halfedge_descriptor h = chosen;
+    if(!is_border(h, mesh))
+      throw Error(Error_code::INVALID_INPUT, "conformal_flatten: welded_boundary() needs a border halfedge");
+    const int v = int(get(vim, source(h, mesh)));
+    for(std::size_t l = 0; l < patch.boundary_loops.size(); ++l)
+      if(std::find(patch.boundary_loops[l].begin(), patch.boundary_loops[l].end(), v) != patch.boundary_loops[l].end())
+        welded = l;
+  }
+  else
+  {
+    for(std::size_t l = 1; l < patch.boundary_loops.size(); ++l)
+      if(patch.loop_length(patch.boundary_loops[l]) > patch.loop_length(patch.boundary_loops[welded]))
+        welded = l;
+  }
+  const std::size_t points_before = patch.points.size();
+  const double maximum_length = choose_parameter(get_parameter(np, internal_np::maximum_edge_length), 0.);
+  if(maximum_length > 0.)
+    patch.split_long_edges(maximum_length);
+  report.edge_splits = patch.points.size() - points_before;
+  patch.split_long_boundary_edges(welded, patch.loop_length(patch.boundary_loops[welded]) / 32.);
+  report.boundary_splits = patch.points.size() - points_before - report.edge_splits;
+
+  const internal::welding::Welded_disc disc = internal::welding::weld(patch, welded, inner_radius);
+  result.welded_faces = disc.faces;
+  report.welded_vertices = disc.number_of_vertices;
+  Intrinsic_triangulation<double>& tri = result.triangulation;
+  tri = Intrinsic_triangulation<double>(disc.number_of_vertices, disc.faces, disc.lengths);
+  {
+    std::map<std::pair<int, int>, bool> seam;
+    for(const auto& e : disc.seams)
+      seam[std::minmax(e.first, e.second)] = true;
+    for(int f = 0; f < tri.number_of_faces(); ++f)
+      for(int c = 0; c < 3; ++c)
+        if(seam.count(std::minmax(tri.vertex(f, c), tri.vertex(f, (c + 1) % 3))))
+          tri.set_unflippable(tri.edge(f, c));
+  }
+  report.seconds_welding = seconds_since(start);
+
+  // --- the flow: flat everywhere, convex free boundary ----------------------------------------
+  // The welded disc's only boundary is the annulus' inner circle.
+  const std::vector<double> targets = disc_flattening_targets(tri);
+  const Clock::time_point flow_start = Clock::now();
+  const Ricci_flow_result<double> flow = discrete_ricci_flow(
+    tri, targets,
+    parameters::curvature_tolerance(
+      choose_parameter(get_parameter(np, internal_np::curvature_tolerance), 1e-10),
+      CGAL::parameters::number_of_iterations(choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 50))));
+  report.seconds_flow = seconds_since(flow_start);
+  report.converged = flow.converged;
+  report.iterations = flow.iterations;
+  report.curvature_error = flow.max_curvature_error;
+  report.flips = flow.number_of_flips;
+
+  // --- layout, and the patch region of the final triangulation --------------------------------
+  const Clock::time_point layout_start = Clock::now();
+  typedef Intrinsic_triangulation<double>::Face_location Location;
+  std::vector<char> in_patch(tri.number_of_faces(), 0);
+  result.face_region.resize(tri.number_of_faces());
+  for(int f = 0; f < tri.number_of_faces(); ++f)
+  {
+    const Location initial = tri.to_input(Location{f, {{1. / 3, 1. / 3, 1. / 3}}});
+    in_patch[f] = initial.face < int(disc.patch_faces);
+    result.face_region[f] = in_patch[f] ? Welded_region::PATCH
+                            : initial.face < int(disc.patch_faces + disc.fill_faces) ? Welded_region::HOLE_FILL
+                                                                                     : Welded_region::ANNULUS;
+  }
+  const std::vector<Intrinsic_triangulation<double>::Point_2> positions = tri.layout();
+  result.layout.reserve(positions.size());
+  for(const auto& p : positions)
+    result.layout.push_back(Epick::Point_2(p[0], p[1]));
+  for(int f = 0; f < tri.number_of_faces(); ++f)
+    if(in_patch[f])
+    {
+      result.triangles.push_back({{tri.vertex(f, 0), tri.vertex(f, 1), tri.vertex(f, 2)}});
+      result.triangle_face.push_back(f);
+    }
+
+  result.uv.assign(result.layout.begin(), result.layout.begin() + std::ptrdiff_t(patch.number_of_input_vertices));
+
+  // The domain boundary: loops of the patch region, each vertex with its surface point.
+  std::vector<std::vector<int> > loops = internal::region_boundary_loops(tri, in_patch);
+  std::map<int, Domain_point> domain_point;
+  for(std::size_t t = 0; t < result.triangles.size(); ++t)
+    for(int c = 0; c < 3; ++c)
+    {
+      const int v = result.triangles[t][c];
+      if(domain_point.count(v))
+        continue;
+      std::array<double, 3> b{{0., 0., 0.}};
+      b[c] = 1.;
+      domain_point[v] = result.to_surface(t, b);
+      domain_point[v].uv = result.layout[v];
+    }
+  const int outer_marker = patch.boundary_loops[welded].front();
+  for(const std::vector<int>& loop : loops)
+  {
+    std::vector<Domain_point> polygon;
+    for(int v : loop)
+      polygon.push_back(domain_point.at(v));
+    if(std::find(loop.begin(), loop.end(), outer_marker) != loop.end())
+      result.outer_boundary = polygon;
+    else
+      result.holes.push_back(polygon);
+  }
+  // Outer loop first for the check, as indices into the layout.
+  std::stable_partition(loops.begin(), loops.end(), [&](const std::vector<int>& loop) {
+    return std::find(loop.begin(), loop.end(), outer_marker) != loop.end();
+  });
+  report.seconds_layout = seconds_since(layout_start);
+
+  // --- verification with exact predicates -------------------------------------------------------
+  const Clock::time_point check_start = Clock::now();
+  std::vector<std::array<std::size_t, 3> > triangles;
+  for(const auto& t : result.triangles)
+    triangles.push_back({{std::size_t(t[0]), std::size_t(t[1]), std::size_t(t[2])}});
+  std::vector<std::vector<std::size_t> > index_loops;
+  for(const auto& loop : loops)
+    index_loops.emplace_back(loop.begin(), loop.end());
+  report.embedding = check_planar_embedding(result.layout, triangles, index_loops);
+  report.seconds_check = seconds_since(check_start);
+
+  // Scale of the map along the input edges, and the conformal factor at the input vertices.
+  report.min_scale = std::numeric_limits<double>::infinity();
+  report.max_scale = 0.;
+  std::vector<double> scale_sum(patch.number_of_input_vertices, 0.);
+  std::vector<int> scale_count(patch.number_of_input_vertices, 0);
+  for(auto f : faces(mesh))
+  {
+    const halfedge_descriptor h0 = halfedge(f, mesh);
+    std::array<std::size_t, 3> v{{std::size_t(get(vim, source(h0, mesh))), std::size_t(get(vim, target(h0, mesh))),
+                                  std::size_t(get(vim, target(next(h0, mesh), mesh)))}};
+    if(CGAL::orientation(result.uv[v[0]], result.uv[v[1]], result.uv[v[2]]) != CGAL::POSITIVE)
+      ++report.folded_input_triangles_in_uv;
+    for(int c = 0; c < 3; ++c)
+    {
+      const std::size_t a = v[c], b = v[(c + 1) % 3];
+      const double s = std::sqrt(CGAL::squared_distance(result.uv[a], result.uv[b]))
+                       / internal::welding::distance(patch.points[a], patch.points[b]);
+      report.min_scale = (std::min)(report.min_scale, s);
+      report.max_scale = (std::max)(report.max_scale, s);
+      scale_sum[a] += s;
+      ++scale_count[a];
+    }
+  }
+  result.conformal_factor.resize(patch.number_of_input_vertices);
+  for(std::size_t v = 0; v < scale_sum.size(); ++v)
+    result.conformal_factor[v] = scale_count[v] > 0 ? std::log(scale_sum[v] / scale_count[v]) : 0.;
+
+  if(!report.converged)
+    report.status = Error_code::NOT_CONVERGED;
+  if(!report.embedding.is_embedding())
+    report.status = Error_code::NOT_AN_EMBEDDING;
+  return result;
+}
+
+} // namespace Conformal_remeshing
+} // namespace CGAL
+
+#endif // CGAL_CONFORMAL_REMESHING_CONFORMAL_FLATTEN_H

@@ -1,0 +1,128 @@
+// Copyright (c) 2026 CGAL Conformal Remeshing contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Point location in a planar triangulation given as indexed triangles, with a uniform grid of
+// buckets: the pull-back and the sizing field locate every planar point this way.
+
+#ifndef CGAL_CONFORMAL_REMESHING_INTERNAL_REMESHING_PLANAR_LOCATOR_H
+#define CGAL_CONFORMAL_REMESHING_INTERNAL_REMESHING_PLANAR_LOCATOR_H
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace Conformal_remeshing {
+namespace internal {
+namespace remeshing {
+
+class Planar_locator
+{
+public:
+  typedef CGAL::Epick::Point_2 Point_2;
+
+  /// A triangle index and barycentric coordinates in it.
+  struct Location
+  {
+    std::size_t triangle;
+    std::array<double, 3> coordinates;
+  };
+
+  Planar_locator(const std::vector<Point_2>& points, const std::vector<std::array<int, 3> >& triangles)
+    : points_(points), triangles_(triangles)
+  {
+    for(const auto& t : triangles)
+      for(int v : t)
+        box_ += points[v].bbox();
+    const double area = (box_.xmax() - box_.xmin()) * (box_.ymax() - box_.ymin());
+    const double cell = std::sqrt((std::max)(area, 1e-300) / double((std::max<std::size_t>)(triangles.size(), 1)));
+    nx_ = (std::max)(1, (std::min)(4096, int((box_.xmax() - box_.xmin()) / cell) + 1));
+    ny_ = (std::max)(1, (std::min)(4096, int((box_.ymax() - box_.ymin()) / cell) + 1));
+    buckets_.resize(std::size_t(nx_) * std::size_t(ny_));
+    for(std::size_t t = 0; t < triangles.size(); ++t)
+    {
+      CGAL::Bbox_2 b;
+      for(int v : triangles[t])
+        b += points[v].bbox();
+      for(int i = cell_x(b.xmin()); i <= cell_x(b.xmax()); ++i)
+        for(int j = cell_y(b.ymin()); j <= cell_y(b.ymax()); ++j)
+          buckets_[std::size_t(j) * std::size_t(nx_) + std::size_t(i)].push_back(t);
+    }
+  }
+
+  /// The triangle containing `p`, or, for a point outside every triangle (on the boundary up
+  /// to rounding, or just beyond it), the nearest one with coordinates clamped onto it.
+  Location locate(const Point_2& p) const
+  {
+    Location best{0, {{1., 0., 0.}}};
+    double best_score = -std::numeric_limits<double>::infinity();
+    const int ci = cell_x(p.x()), cj = cell_y(p.y());
+    for(int ring = 0; ring <= (std::max)(nx_, ny_); ++ring)
+    {
+      for(int i = ci - ring; i <= ci + ring; ++i)
+        for(int j = cj - ring; j <= cj + ring; ++j)
+        {
+          if(i < 0 || j < 0 || i >= nx_ || j >= ny_ || ((std::max)(std::abs(i - ci), std::abs(j - cj)) != ring))
+            continue;
+          for(std::size_t t : buckets_[std::size_t(j) * std::size_t(nx_) + std::size_t(i)])
+          {
+            const std::array<double, 3> b = barycentric(t, p);
+            const double score = (std::min)({b[0], b[1], b[2]});
+            if(score > best_score)
+            {
+              best_score = score;
+              best = Location{t, b};
+            }
+          }
+        }
+      // Inside a triangle: done. Outside: one more ring may hold a nearer triangle.
+      if(best_score >= 0. || (best_score > -std::numeric_limits<double>::infinity() && ring > 0))
+        break;
+    }
+    if(best_score < 0.)
+    {
+      for(double& c : best.coordinates)
+        c = (std::max)(c, 0.);
+      const double sum = best.coordinates[0] + best.coordinates[1] + best.coordinates[2];
+      for(double& c : best.coordinates)
+        c /= sum;
+    }
+    return best;
+  }
+
+private:
+  int cell_x(double x) const
+  {
+    return (std::max)(0, (std::min)(nx_ - 1, int((x - box_.xmin()) / (box_.xmax() - box_.xmin() + 1e-300) * nx_)));
+  }
+  int cell_y(double y) const
+  {
+    return (std::max)(0, (std::min)(ny_ - 1, int((y - box_.ymin()) / (box_.ymax() - box_.ymin() + 1e-300) * ny_)));
+  }
+
+  std::array<double, 3> barycentric(std::size_t t, const Point_2& p) const
+  {
+    const Point_2 &a = points_[triangles_[t][0]], &b = points_[triangles_[t][1]], &c = points_[triangles_[t][2]];
+    const double area = (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
+    const double wa = ((b.x() - p.x()) * (c.y() - p.y()) - (b.y() - p.y()) * (c.x() - p.x())) / area;
+    const double wb = ((c.x() - p.x()) * (a.y() - p.y()) - (c.y() - p.y()) * (a.x() - p.x())) / area;
+    return {{wa, wb, 1. - wa - wb}};
+  }
+
+  const std::vector<Point_2>& points_;
+  const std::vector<std::array<int, 3> >& triangles_;
+  CGAL::Bbox_2 box_;
+  int nx_ = 1, ny_ = 1;
+  std::vector<std::vector<std::size_t> > buckets_;
+};
+
+} // namespace remeshing
+} // namespace internal
+} // namespace Conformal_remeshing
+} // namespace CGAL
+
+#endif // CGAL_CONFORMAL_REMESHING_INTERNAL_REMESHING_PLANAR_LOCATOR_H

@@ -1,0 +1,291 @@
+// Copyright (c) 2026 CGAL Conformal Remeshing contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The planar stage of the remesher (paper Sec. 4.5, Alg. 5): boundary loops resampled in 3D,
+// then CGAL's constrained Delaunay refinement with a shape bound and a size field.
+
+#ifndef CGAL_CONFORMAL_REMESHING_INTERNAL_REMESHING_PLANAR_MESHER_H
+#define CGAL_CONFORMAL_REMESHING_INTERNAL_REMESHING_PLANAR_MESHER_H
+
+#include <CGAL/Conformal_remeshing/conformal_flatten.h>
+
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Delaunay_mesh_face_base_2.h>
+#include <CGAL/Delaunay_mesh_size_criteria_2.h>
+#include <CGAL/Delaunay_mesh_vertex_base_2.h>
+#include <CGAL/Delaunay_mesher_2.h>
+
+#include <cmath>
+#include <list>
+#include <map>
+#include <vector>
+
+namespace CGAL {
+namespace Conformal_remeshing {
+namespace internal {
+namespace remeshing {
+
+/// A boundary sample: its planar position and the surface point it stands for.
+struct Boundary_sample
+{
+  Epick::Point_2 uv;
+  Epick::Point_3 point;
+};
+
+/// Resamples a closed boundary loop along its 3D polyline with spacing close to `spacing`,
+/// keeping every vertex where the polyline turns by more than `corner_degrees`. Each sample
+/// lies on an edge of the input polyline, and its uv on the corresponding planar segment (a
+/// boundary edge maps affinely onto its planar image).
+inline std::vector<Boundary_sample> resample_loop(const std::vector<Domain_point>& loop, double spacing, double corner_degrees)
+{
+  const std::size_t n = loop.size();
+  auto length = [&](std::size_t i) { return std::sqrt(CGAL::squared_distance(loop[i].point, loop[(i + 1) % n].point)); };
+  std::vector<std::size_t> corners;
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const Epick::Vector_3 in = loop[i].point - loop[(i + n - 1) % n].point, out = loop[(i + 1) % n].point - loop[i].point;
+    const double c = (in * out) / std::sqrt(in.squared_length() * out.squared_length());
+    if(std::acos((std::max)(-1., (std::min)(1., c))) * 180. / CGAL_PI > corner_degrees)
+      corners.push_back(i);
+  }
+  double perimeter = 0.;
+  for(std::size_t i = 0; i < n; ++i)
+    perimeter += length(i);
+  // A loop needs three samples at least; without corners it is cut into three equal arcs.
+  if(corners.size() < 3 && perimeter < 3. * spacing)
+    spacing = perimeter / 3.;
+  if(corners.empty())
+    corners.push_back(0);
+
+  std::vector<Boundary_sample> samples;
+  for(std::size_t k = 0; k < corners.size(); ++k)
+  {
+    const std::size_t first = corners[k], last = corners[(k + 1) % corners.size()];
+    const std::size_t count = (last > first) ? last - first : last + n - first; // edges of this arc
+    double arc = 0.;
+    for(std::size_t e = 0; e < count; ++e)
+      arc += length((first + e) % n);
+    const std::size_t pieces = (std::max<std::size_t>)(corners.size() == 1 ? 3 : 1, std::size_t(std::round(arc / spacing)));
+    const double step = arc / double(pieces);
+    samples.push_back(Boundary_sample{loop[first].uv, loop[first].point});
+    // Walk along the arc and drop a sample every `step`.
+    std::size_t e = 0;
+    double done = 0.; // arc length before edge e
+    for(std::size_t s = 1; s < pieces; ++s)
+    {
+      const double at = step * double(s);
+      while(done + length((first + e) % n) < at && e + 1 < count)
+        done += length((first + e++) % n);
+      const std::size_t i = (first + e) % n, j = (i + 1) % n;
+      const double t = (std::min)(1., (at - done) / length(i));
+      samples.push_back(Boundary_sample{
+        Epick::Point_2(loop[i].uv.x() + t * (loop[j].uv.x() - loop[i].uv.x()), loop[i].uv.y() + t * (loop[j].uv.y() - loop[i].uv.y())),
+        Epick::Point_3(loop[i].point.x() + t * (loop[j].point.x() - loop[i].point.x()),
+                       loop[i].point.y() + t * (loop[j].point.y() - loop[i].point.y()),
+                       loop[i].point.z() + t * (loop[j].point.z() - loop[i].point.z()))});
+    }
+  }
+  return samples;
+}
+
+/// Mesh_2 criteria: CGAL's shape bound, and a size bound given by a size field on the plane
+/// (a triangle is too big when its longest edge exceeds the field at its centroid).
+template <typename CDT, typename Size_field>
+class Size_field_criteria_2 : public CGAL::Delaunay_mesh_size_criteria_2<CDT>
+{
+  typedef CGAL::Delaunay_mesh_size_criteria_2<CDT> Base;
+
+public:
+  typedef typename Base::Quality Quality;
+
+  Size_field_criteria_2(double shape_bound, const Size_field& size) : Base(shape_bound, 0.), size_(size) {}
+
+  class Is_bad : public Base::Is_bad
+  {
+  public:
+    Is_bad(double shape_bound, const Size_field& size, const typename CDT::Geom_traits& traits)
+      : Base::Is_bad(shape_bound, 0., traits), size_(size)
+    {}
+
+    Mesh_2::Face_badness operator()(const Quality q) const { return Base::Is_bad::operator()(q); }
+
+    Mesh_2::Face_badness operator()(const typename CDT::Face_handle& fh, Quality& q) const
+    {
+      Base::Is_bad::operator()(fh, q); // the shape part: q.first is the squared sine of the smallest angle
+      const Epick::Point_2 a = to_epick(fh->vertex(0)->point()), b = to_epick(fh->vertex(1)->point()),
+                           c = to_epick(fh->vertex(2)->point());
+      const double longest = (std::max)({CGAL::squared_distance(a, b), CGAL::squared_distance(b, c), CGAL::squared_distance(c, a)});
+      const double target = size_(Epick::Point_2((a.x() + b.x() + c.x()) / 3., (a.y() + b.y() + c.y()) / 3.));
+      q.second = longest / (target * target);
+      return operator()(q);
+    }
+
+  private:
+    template <typename P>
+    static Epick::Point_2 to_epick(const P& p) { return Epick::Point_2(CGAL::to_double(p.x()), CGAL::to_double(p.y())); }
+    Size_field size_;
+  };
+
+  Is_bad is_bad_object() const { return Is_bad(this->bound(), size_, this->traits); }
+
+private:
+  Size_field size_;
+};
+
+/// A planar triangle mesh: the boundary samples first, in loop order, then the points the
+/// refinement added.
+struct Planar_mesh
+{
+  std::vector<Epick::Point_2> points;
+  std::size_t number_of_samples = 0;
+  std::vector<std::array<int, 3> > triangles; // counterclockwise
+};
+
+// Marks the faces of `cdt` at odd nesting depth (counting constraints crossed from the
+// infinite face) as the domain: the outer loop's inside minus the holes.
+template <typename CDT>
+void mark_domain(CDT& cdt)
+{
+  typedef typename CDT::Face_handle Face_handle;
+  std::map<Face_handle, int> level;
+  std::list<std::pair<Face_handle, int> > frontier{{cdt.infinite_face(), 0}};
+  while(!frontier.empty())
+  {
+    const std::pair<Face_handle, int> seed = frontier.front();
+    frontier.pop_front();
+    if(level.count(seed.first))
+      continue;
+    level[seed.first] = seed.second;
+    std::vector<Face_handle> stack{seed.first};
+    while(!stack.empty())
+    {
+      const Face_handle f = stack.back();
+      stack.pop_back();
+      f->set_in_domain(seed.second % 2 == 1);
+      for(int i = 0; i < 3; ++i)
+      {
+        const Face_handle g = f->neighbor(i);
+        if(level.count(g))
+          continue;
+        if(cdt.is_constrained(std::make_pair(f, i)))
+          frontier.emplace_back(g, seed.second + 1);
+        else
+        {
+          level[g] = seed.second;
+          stack.push_back(g);
+        }
+      }
+    }
+  }
+}
+
+/// Meshes the domain bounded by `loops` (outer loop first) with CGAL's constrained Delaunay
+/// refinement over `Kernel`: a minimum angle of `min_angle_degrees` (up to the refinement's
+/// guarantees near small input angles) and a longest edge below `size(p)` at each triangle's
+/// centroid. Then `smoothing_iterations` passes of Laplacian smoothing of the free vertices:
+/// each moves to the mean of its neighbours when its star stays positively oriented, the points
+/// are triangulated again with the same constraints and refined again, so the bounds still hold.
+template <typename Kernel, typename Size_field>
+Planar_mesh mesh_planar_domain(const std::vector<std::vector<Boundary_sample> >& loops, double min_angle_degrees,
+                               const Size_field& size, int smoothing_iterations)
+{
+  typedef CGAL::Delaunay_mesh_vertex_base_2<Kernel> Vb;
+  typedef CGAL::Delaunay_mesh_face_base_2<Kernel> Fb;
+  typedef CGAL::Triangulation_data_structure_2<Vb, Fb> Tds;
+  typedef CGAL::Constrained_Delaunay_triangulation_2<Kernel, Tds, CGAL::Exact_predicates_tag> CDT;
+  typedef typename CDT::Vertex_handle Vertex_handle;
+  typedef typename CDT::Face_handle Face_handle;
+  typedef typename Kernel::Point_2 Point;
+  typedef Size_field_criteria_2<CDT, Size_field> Criteria;
+  const double sine = std::sin(min_angle_degrees * CGAL_PI / 180.);
+
+  auto refine = [&](CDT& cdt) {
+    mark_domain(cdt);
+    CGAL::Delaunay_mesher_2<CDT, Criteria> mesher(cdt, Criteria(sine * sine, size));
+    mesher.init(true);
+    mesher.refine_mesh();
+  };
+
+  CDT cdt;
+  for(const auto& loop : loops)
+  {
+    std::vector<Vertex_handle> handles;
+    for(const Boundary_sample& s : loop)
+      handles.push_back(cdt.insert(Point(s.uv.x(), s.uv.y())));
+    for(std::size_t i = 0; i < handles.size(); ++i)
+      cdt.insert_constraint(handles[i], handles[(i + 1) % handles.size()]);
+  }
+  refine(cdt);
+
+  for(int iteration = 0; iteration < smoothing_iterations; ++iteration)
+  {
+    std::vector<std::pair<Point, Point> > constraints;
+    for(auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e)
+      if(cdt.is_constrained(*e))
+        constraints.emplace_back(e->first->vertex(CDT::cw(e->second))->point(), e->first->vertex(CDT::ccw(e->second))->point());
+    std::vector<Point> free_points;
+    for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+    {
+      if(cdt.are_there_incident_constraints(v))
+        continue;
+      double x = 0., y = 0.;
+      int n = 0;
+      auto c = cdt.incident_vertices(v), done = c;
+      do
+        if(!cdt.is_infinite(c))
+        {
+          x += CGAL::to_double(c->point().x());
+          y += CGAL::to_double(c->point().y());
+          ++n;
+        }
+      while(++c != done);
+      const Point moved(x / n, y / n);
+      bool star_stays_positive = true;
+      auto f = cdt.incident_faces(v), first = f;
+      do
+      {
+        const int i = f->index(v);
+        star_stays_positive = star_stays_positive && !cdt.is_infinite(f)
+                              && CGAL::orientation(moved, f->vertex(CDT::ccw(i))->point(), f->vertex(CDT::cw(i))->point()) == CGAL::POSITIVE;
+      }
+      while(++f != first);
+      free_points.push_back(star_stays_positive ? moved : v->point());
+    }
+    CDT smoothed;
+    for(const auto& c : constraints)
+      smoothed.insert_constraint(c.first, c.second);
+    smoothed.insert(free_points.begin(), free_points.end());
+    refine(smoothed);
+    cdt.swap(smoothed);
+  }
+
+  // Output: the boundary samples first, in loop order, then the other vertices.
+  Planar_mesh result;
+  std::map<Vertex_handle, int> index;
+  for(const auto& loop : loops)
+    for(const Boundary_sample& s : loop)
+    {
+      typename CDT::Locate_type type;
+      int i = 0;
+      const Face_handle f = cdt.locate(Point(s.uv.x(), s.uv.y()), type, i);
+      if(type != CDT::VERTEX)
+        throw Error(Error_code::INVALID_INPUT, "planar meshing lost a boundary sample (internal error)");
+      if(index.emplace(f->vertex(i), int(result.points.size())).second)
+        result.points.push_back(s.uv);
+    }
+  result.number_of_samples = result.points.size();
+  for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+    if(index.emplace(v, int(result.points.size())).second)
+      result.points.push_back(Epick::Point_2(CGAL::to_double(v->point().x()), CGAL::to_double(v->point().y())));
+  for(Face_handle f : cdt.finite_face_handles())
+    if(f->is_in_domain())
+      result.triangles.push_back({{index.at(f->vertex(0)), index.at(f->vertex(1)), index.at(f->vertex(2))}});
+  return result;
+}
+
+} // namespace remeshing
+} // namespace internal
+} // namespace Conformal_remeshing
+} // namespace CGAL
+
+#endif // CGAL_CONFORMAL_REMESHING_INTERNAL_REMESHING_PLANAR_MESHER_H

@@ -1,0 +1,360 @@
+// Copyright (c) 2026 CGAL Conformal Remeshing contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Conformal welding (paper Sec. 4.3, Alg. 3, with the holes filled as in Sec. 4.1): a genus-0
+// patch with k boundary loops becomes a topological disc given by connectivity and edge lengths
+// only, whose free boundary is the inner circle of a planar annulus welded to one loop.
+
+#ifndef CGAL_CONFORMAL_REMESHING_INTERNAL_WELDING_WELD_H
+#define CGAL_CONFORMAL_REMESHING_INTERNAL_WELDING_WELD_H
+
+#include <CGAL/Conformal_remeshing/Error.h>
+#include <CGAL/Conformal_remeshing/internal/welding/annulus.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Conformal_remeshing {
+namespace internal {
+namespace welding {
+
+typedef std::array<double, 3> Vec3;
+
+inline Vec3 operator-(const Vec3& a, const Vec3& b) { return {{a[0] - b[0], a[1] - b[1], a[2] - b[2]}}; }
+inline double norm(const Vec3& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
+inline double distance(const Vec3& a, const Vec3& b) { return norm(a - b); }
+
+/// A copy of the patch as indices, which welding may refine: boundary edges are split at their
+/// midpoints, exactly on the input edge. Every face remembers the input face it lies in and the
+/// barycentric coordinates of its corners there, so that points map back to the input exactly.
+struct Indexed_patch
+{
+  std::vector<Vec3> points;                         // input vertices first, then split points
+  std::size_t number_of_input_vertices = 0;
+  std::vector<std::array<int, 3> > faces;           // counterclockwise
+  std::vector<int> input_face;                      // the input face each face lies in
+  std::vector<std::array<Vec3, 3> > input_coordinates; // barycentric coordinates of the corners there
+  /// Boundary loops as vertex cycles in the order of the border halfedges: the missing face of
+  /// the edge (loop[i], loop[i+1]) lies on its left.
+  std::vector<std::vector<int> > boundary_loops;
+
+  double loop_length(const std::vector<int>& loop) const
+  {
+    double length = 0.;
+    for(std::size_t i = 0; i < loop.size(); ++i)
+      length += distance(points[loop[i]], points[loop[(i + 1) % loop.size()]]);
+    return length;
+  }
+
+  /// The 3D point at barycentric coordinates `b` of face `f`.
+  Vec3 point_in_face(int f, const std::array<double, 3>& b) const
+  {
+    Vec3 p{{0., 0., 0.}};
+    for(int c = 0; c < 3; ++c)
+      for(int k = 0; k < 3; ++k)
+        p[k] += b[c] * points[faces[f][c]][k];
+    return p;
+  }
+
+  /// The input face and barycentric coordinates of the point at `b` in face `f`.
+  std::pair<int, std::array<double, 3> > input_location(int f, const std::array<double, 3>& b) const
+  {
+    std::array<double, 3> q{{0., 0., 0.}};
+    for(int c = 0; c < 3; ++c)
+      for(int k = 0; k < 3; ++k)
+        q[k] += b[c] * input_coordinates[f][c][k];
+    return {input_face[f], q};
+  }
+
+  /// Splits the edges of boundary loop `loop_index` longer than `max_length` at their
+  /// midpoints, recursively, so that every edge of the loop ends up at most that long.
+  void split_long_boundary_edges(std::size_t loop_index, double max_length)
+  {
+    Edge_faces face_of = directed_edge_faces();
+    std::vector<int> refined;
+    const std::vector<int> loop = boundary_loops[loop_index];
+    for(std::size_t i = 0; i < loop.size(); ++i)
+      refine_boundary_edge(loop[i], loop[(i + 1) % loop.size()], max_length, face_of, refined);
+    boundary_loops[loop_index] = refined;
+  }
+
+  /// Splits every edge longer than `max_length` at its midpoint, longest first, until none is
+  /// left: the input's long CAD slivers become chains of shorter triangles on the same surface,
+  /// so that the map, affine in each triangle, can follow the conformal factor.
+  void split_long_edges(double max_length)
+  {
+    Edge_faces face_of = directed_edge_faces();
+    std::map<int, int> loop_next; // along the boundary loops
+    for(const auto& loop : boundary_loops)
+      for(std::size_t i = 0; i < loop.size(); ++i)
+        loop_next[loop[i]] = loop[(i + 1) % loop.size()];
+    for(bool again = true; again;)
+    {
+      std::vector<std::pair<double, std::pair<int, int> > > long_edges;
+      for(const auto& e : face_of)
+        if(e.first.first < e.first.second || !face_of.count({e.first.second, e.first.first}))
+        {
+          const double l = distance(points[e.first.first], points[e.first.second]);
+          if(l > max_length)
+            long_edges.push_back({l, e.first});
+        }
+      std::sort(long_edges.rbegin(), long_edges.rend());
+      again = !long_edges.empty();
+      for(const auto& e : long_edges)
+      {
+        const int a = e.second.first, b = e.second.second;
+        // The edge may have been split already in this round.
+        if(!face_of.count({a, b}) && !face_of.count({b, a}))
+          continue;
+        const int m = split_edge(a, b, face_of);
+        for(const std::pair<int, int>& border : {std::make_pair(a, b), std::make_pair(b, a)})
+        {
+          auto it = loop_next.find(border.first);
+          if(it != loop_next.end() && it->second == border.second)
+          {
+            it->second = m;
+            loop_next[m] = border.second;
+          }
+        }
+      }
+    }
+    for(auto& loop : boundary_loops)
+    {
+      const int start = loop.front();
+      loop.assign(1, start);
+      for(int v = loop_next.at(start); v != start; v = loop_next.at(v))
+        loop.push_back(v);
+    }
+  }
+
+private:
+  typedef std::map<std::pair<int, int>, int> Edge_faces; // directed edge -> the face holding it
+
+  Edge_faces directed_edge_faces() const
+  {
+    Edge_faces face_of;
+    for(std::size_t f = 0; f < faces.size(); ++f)
+      for(int c = 0; c < 3; ++c)
+        face_of[{faces[f][c], faces[f][(c + 1) % 3]}] = int(f);
+    return face_of;
+  }
+
+  // Appends the chain from a (included) to b (excluded) after splitting the boundary edge (a, b).
+  void refine_boundary_edge(int a, int b, double max_length, Edge_faces& face_of, std::vector<int>& chain)
+  {
+    if(distance(points[a], points[b]) <= max_length)
+    {
+      chain.push_back(a);
+      return;
+    }
+    const int m = split_edge(a, b, face_of);
+    refine_boundary_edge(a, m, max_length, face_of, chain);
+    refine_boundary_edge(m, b, max_length, face_of, chain);
+  }
+
+  // Splits the edge (a, b) at its midpoint m: each face (x, y, o) holding it as x -> y becomes
+  // (x, m, o) and (m, y, o), with the input coordinates of their corners.
+  int split_edge(int a, int b, Edge_faces& face_of)
+  {
+    auto midpoint = [](const Vec3& x, const Vec3& y) { return Vec3{{0.5 * (x[0] + y[0]), 0.5 * (x[1] + y[1]), 0.5 * (x[2] + y[2])}}; };
+    const int m = int(points.size());
+    points.push_back(midpoint(points[a], points[b]));
+    for(const std::pair<int, int>& side : {std::make_pair(a, b), std::make_pair(b, a)})
+    {
+      const auto it = face_of.find(side);
+      if(it == face_of.end())
+        continue; // a boundary edge has one side
+      const int f = it->second, x = side.first, y = side.second;
+      const int c = int(std::find(faces[f].begin(), faces[f].end(), x) - faces[f].begin());
+      const int o = faces[f][(c + 2) % 3];
+      const Vec3 cx = input_coordinates[f][c], cy = input_coordinates[f][(c + 1) % 3], co = input_coordinates[f][(c + 2) % 3];
+      const Vec3 cm = midpoint(cx, cy);
+      const int g = int(faces.size());
+      faces[f] = {{x, m, o}};
+      input_coordinates[f] = {{cx, cm, co}};
+      faces.push_back({{m, y, o}});
+      input_face.push_back(input_face[f]);
+      input_coordinates.push_back({{cm, cy, co}});
+      face_of.erase(side);
+      face_of[{x, m}] = f;
+      face_of[{m, o}] = f;
+      face_of[{m, y}] = g;
+      face_of[{y, o}] = g;
+      face_of[{o, m}] = g;
+    }
+    return m;
+  }
+};
+
+/// Copies a triangle mesh into an `Indexed_patch`, with its boundary loops.
+template <typename TriangleMesh, typename VertexPointMap, typename VertexIndexMap, typename FaceIndexMap>
+Indexed_patch make_indexed_patch(const TriangleMesh& mesh, VertexPointMap vpm, VertexIndexMap vim, FaceIndexMap fim)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
+  Indexed_patch patch;
+  patch.points.resize(num_vertices(mesh));
+  for(auto v : vertices(mesh))
+  {
+    const auto& p = get(vpm, v);
+    patch.points[get(vim, v)] = {{CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z())}};
+  }
+  patch.number_of_input_vertices = patch.points.size();
+  patch.faces.resize(num_faces(mesh));
+  patch.input_face.resize(num_faces(mesh));
+  patch.input_coordinates.resize(num_faces(mesh));
+  for(auto f : faces(mesh))
+  {
+    const std::size_t i = get(fim, f);
+    const halfedge_descriptor h = halfedge(f, mesh);
+    // Corner order of CGAL::Polygon_mesh_processing::locate(): source(h), target(h), target(next(h)).
+    patch.faces[i] = {{int(get(vim, source(h, mesh))), int(get(vim, target(h, mesh))),
+                       int(get(vim, target(next(h, mesh), mesh)))}};
+    patch.input_face[i] = int(i);
+    patch.input_coordinates[i] = {{Vec3{{1., 0., 0.}}, Vec3{{0., 1., 0.}}, Vec3{{0., 0., 1.}}}};
+  }
+  std::unordered_map<halfedge_descriptor, bool> seen;
+  for(halfedge_descriptor h : halfedges(mesh))
+  {
+    if(!is_border(h, mesh) || seen[h])
+      continue;
+    patch.boundary_loops.emplace_back();
+    for(halfedge_descriptor b : halfedges_around_face(h, mesh))
+    {
+      seen[b] = true;
+      patch.boundary_loops.back().push_back(int(get(vim, source(b, mesh))));
+    }
+  }
+  return patch;
+}
+
+/// The welded disc: the patch, one cone vertex filling each hole, and the annulus, as
+/// connectivity and edge lengths. Patch vertices and faces keep their indices.
+struct Welded_disc
+{
+  std::size_t number_of_vertices = 0;
+  std::vector<std::array<int, 3> > faces;
+  std::vector<std::array<double, 3> > lengths; // lengths[f][c]: edge faces[f][c] -> faces[f][c+1]
+  std::size_t patch_faces = 0;
+  std::size_t fill_faces = 0;                  // the hole fills follow the patch faces
+  std::vector<int> free_boundary;              // the annulus' inner circle, counterclockwise
+  std::vector<std::pair<int, int> > seams;     // welded loop and hole loop edges
+  double scale = 1.;                           // welded length = 3D length * scale
+};
+
+/// Welds `patch` along its loop `welded` to a planar annulus of inner radius `inner_radius` and
+/// fills its other loops with cone vertices. The loop is scaled to the unit circle: the annulus'
+/// outer circle is the polygon inscribed in it whose sides are exactly the loop's edge lengths,
+/// so both sides of every seam edge have one length.
+inline Welded_disc weld(const Indexed_patch& patch, std::size_t welded, double inner_radius)
+{
+  const std::vector<int>& seam = patch.boundary_loops[welded];
+  const std::size_t n = seam.size();
+  std::vector<double> seam_lengths(n);
+  for(std::size_t i = 0; i < n; ++i)
+    seam_lengths[i] = distance(patch.points[seam[i]], patch.points[seam[(i + 1) % n]]);
+
+  Welded_disc disc;
+  const double radius = inscribing_radius(seam_lengths);
+  disc.scale = 1. / radius;
+  auto length = [&](int a, int b) { return disc.scale * distance(patch.points[a], patch.points[b]); };
+
+  for(const auto& f : patch.faces)
+  {
+    disc.faces.push_back(f);
+    disc.lengths.push_back({{length(f[0], f[1]), length(f[1], f[2]), length(f[2], f[0])}});
+  }
+  disc.patch_faces = patch.faces.size();
+  int next_vertex = int(patch.points.size());
+
+  // A cone vertex per hole, lifted off the hole along its normal so that no fan triangle is flat.
+  for(std::size_t l = 0; l < patch.boundary_loops.size(); ++l)
+  {
+    if(l == welded)
+      continue;
+    const std::vector<int>& loop = patch.boundary_loops[l];
+    Vec3 centre{{0., 0., 0.}}, normal{{0., 0., 0.}};
+    for(int v : loop)
+      for(int k = 0; k < 3; ++k)
+        centre[k] += patch.points[v][k] / double(loop.size());
+    for(std::size_t i = 0; i < loop.size(); ++i) // Newell's normal of the loop
+    {
+      const Vec3& p = patch.points[loop[i]];
+      const Vec3& q = patch.points[loop[(i + 1) % loop.size()]];
+      normal[0] += (p[1] - q[1]) * (p[2] + q[2]);
+      normal[1] += (p[2] - q[2]) * (p[0] + q[0]);
+      normal[2] += (p[0] - q[0]) * (p[1] + q[1]);
+    }
+    double mean_radius = 0.;
+    for(int v : loop)
+      mean_radius += distance(centre, patch.points[v]) / double(loop.size());
+    const double nn = norm(normal);
+    Vec3 apex = centre;
+    if(nn > 0.)
+      for(int k = 0; k < 3; ++k)
+        apex[k] += 0.5 * mean_radius * normal[k] / nn;
+    const int cone = next_vertex++;
+    for(std::size_t i = 0; i < loop.size(); ++i)
+    {
+      const int a = loop[i], b = loop[(i + 1) % loop.size()];
+      disc.faces.push_back({{a, b, cone}});
+      disc.lengths.push_back({{length(a, b), disc.scale * distance(patch.points[b], apex),
+                               disc.scale * distance(apex, patch.points[a])}});
+      disc.seams.push_back({a, b});
+    }
+  }
+  disc.fill_faces = disc.faces.size() - disc.patch_faces;
+
+  // The annulus: outer circle through the seam vertices, counterclockwise in the loop's order.
+  std::vector<std::array<double, 2> > outer(n);
+  double angle = 0.;
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    outer[i] = {{std::cos(angle), std::sin(angle)}};
+    angle += 2. * std::asin((std::min)(1., seam_lengths[i] / (2. * radius)));
+  }
+  const std::size_t inner_count = (std::max<std::size_t>)(16, std::size_t(std::ceil(double(n) * inner_radius)));
+  const Planar_annulus annulus = make_annulus(outer, inner_radius, inner_count);
+  std::vector<int> vertex_of(annulus.points.size());
+  for(std::size_t i = 0; i < annulus.points.size(); ++i)
+    vertex_of[i] = (i < n) ? seam[i] : next_vertex++;
+  for(std::size_t i = 0; i < annulus.inner; ++i)
+    disc.free_boundary.push_back(vertex_of[n + i]);
+  for(std::size_t i = 0; i < n; ++i)
+    disc.seams.push_back({seam[i], seam[(i + 1) % n]});
+
+  for(const auto& f : annulus.faces)
+  {
+    std::array<int, 3> face;
+    std::array<double, 3> l;
+    for(int c = 0; c < 3; ++c)
+    {
+      const int i = f[c], j = f[(c + 1) % 3];
+      face[c] = vertex_of[i];
+      // A seam edge takes the patch's length; elsewhere the annulus is planar.
+      const bool on_seam = i < int(n) && j < int(n) && (j == (i + 1) % int(n));
+      l[c] = on_seam ? length(seam[i], seam[j])
+                     : std::hypot(annulus.points[i][0] - annulus.points[j][0], annulus.points[i][1] - annulus.points[j][1]);
+    }
+    disc.faces.push_back(face);
+    disc.lengths.push_back(l);
+  }
+  disc.number_of_vertices = std::size_t(next_vertex);
+  return disc;
+}
+
+} // namespace welding
+} // namespace internal
+} // namespace Conformal_remeshing
+} // namespace CGAL
+
+#endif // CGAL_CONFORMAL_REMESHING_INTERNAL_WELDING_WELD_H

@@ -1,0 +1,718 @@
+// Tests of Intrinsic_triangulation and discrete_ricci_flow. Meshes are generated here.
+
+#include <CGAL/Conformal_remeshing/Intrinsic_triangulation.h>
+#include <CGAL/Conformal_remeshing/discrete_ricci_flow.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <boost/multiprecision/eigen.hpp>
+#include <boost/multiprecision/mpfr.hpp>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <complex>
+#include <iostream>
+#include <map>
+#include <random>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace CR = CGAL::Conformal_remeshing;
+typedef CR::Intrinsic_triangulation<double> Tri;
+typedef std::array<double, 3> P3;
+typedef CGAL::Simple_cartesian<double> K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+
+namespace {
+
+const double pi = 3.14159265358979323846;
+
+struct Soup
+{
+  std::vector<P3> points;
+  std::vector<std::array<int, 3>> faces;
+};
+
+template <typename FT = double>
+CR::Intrinsic_triangulation<FT> from_soup(const Soup& s)
+{
+  std::vector<std::array<FT, 3>> l(s.faces.size());
+  for(std::size_t f = 0; f < s.faces.size(); ++f)
+    for(int c = 0; c < 3; ++c)
+    {
+      const P3& a = s.points[s.faces[f][c]];
+      const P3& b = s.points[s.faces[f][(c + 1) % 3]];
+      const double d = std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+      l[f][c] = FT(d);
+    }
+  return CR::Intrinsic_triangulation<FT>(s.points.size(), s.faces, l);
+}
+
+Mesh to_mesh(const Soup& s)
+{
+  Mesh m;
+  std::vector<Mesh::Vertex_index> v;
+  for(const P3& p : s.points)
+    v.push_back(m.add_vertex(K::Point_3(p[0], p[1], p[2])));
+  for(const auto& f : s.faces)
+    m.add_face(v[f[0]], v[f[1]], v[f[2]]);
+  return m;
+}
+
+// Equilateral triangular lattice: (n+1) x (n+1) points, rows shifted by half a spacing, counterclockwise faces.
+Soup planar_lattice(int n)
+{
+  Soup s;
+  for(int j = 0; j <= n; ++j)
+    for(int i = 0; i <= n; ++i)
+      s.points.push_back({{i + 0.5 * (j % 2), j * std::sqrt(3.) / 2., 0.}});
+  auto id = [n](int i, int j) { return j * (n + 1) + i; };
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i)
+    {
+      if(j % 2 == 0)
+      {
+        s.faces.push_back({{id(i, j), id(i + 1, j), id(i, j + 1)}});
+        s.faces.push_back({{id(i + 1, j), id(i + 1, j + 1), id(i, j + 1)}});
+      }
+      else
+      {
+        s.faces.push_back({{id(i, j), id(i + 1, j + 1), id(i, j + 1)}});
+        s.faces.push_back({{id(i, j), id(i + 1, j), id(i + 1, j + 1)}});
+      }
+    }
+  return s;
+}
+
+// Zipper triangulation between two polylines a (below) and b (above), both ordered by x.
+void zip(const std::vector<int>& a, const std::vector<int>& b, const std::vector<P3>& pts,
+         std::vector<std::array<int, 3>>& faces)
+{
+  std::size_t i = 0, j = 0;
+  while(i + 1 < a.size() || j + 1 < b.size())
+  {
+    const bool advance_a = (j + 1 == b.size()) ||
+                           (i + 1 < a.size() && pts[a[i + 1]][0] <= pts[b[j + 1]][0]);
+    if(advance_a)
+    {
+      faces.push_back({{a[i], a[i + 1], b[j]}});
+      ++i;
+    }
+    else
+    {
+      faces.push_back({{a[i], b[j + 1], b[j]}});
+      ++j;
+    }
+  }
+}
+
+// CAD-like disc: rows of many points alternating with rows of only their two end points, so that
+// the rows are fanned by slivers, on a bumpy surface (nonzero Gaussian curvature).
+Soup cad_sliver_disc(int rows, int per_row, double height, double bump)
+{
+  Soup s;
+  std::vector<std::vector<int>> row(rows + 1);
+  for(int r = 0; r <= rows; ++r)
+  {
+    const int n = (r % 2 == 0) ? per_row : 2;
+    const double y = height * r / rows;
+    for(int i = 0; i < n; ++i)
+    {
+      // uneven spacing, as in CAD tessellations
+      const double t = double(i) / (n - 1);
+      const double x = t + 0.3 * t * (1 - t) * std::sin(7 * t + r);
+      row[r].push_back(static_cast<int>(s.points.size()));
+      s.points.push_back({{x, y, bump * std::sin(pi * x) * std::sin(pi * y / height)}});
+    }
+  }
+  for(int r = 0; r < rows; ++r)
+    zip(row[r], row[r + 1], s.points, s.faces);
+  return s;
+}
+
+// Convex polygon (points on an ellipse at uneven angles) fanned from one vertex, with some fan
+// triangles split 1-to-3 at an interior point: planar, valid, and deliberately bad (slivers,
+// non-Delaunay edges, degree-3 interior vertices).
+Soup bad_convex_polygon()
+{
+  Soup s;
+  const int n = 40;
+  for(int i = 0; i < n; ++i)
+  {
+    const double a = 2 * pi * (i + 0.4 * std::sin(1.7 * i)) / n;
+    s.points.push_back({{1.6 * std::cos(a), std::sin(a), 0.}});
+  }
+  for(int i = 1; i + 1 < n; ++i)
+  {
+    const std::array<int, 3> f{{0, i, i + 1}};
+    if(i % 3 != 0)
+    {
+      s.faces.push_back(f);
+      continue;
+    }
+    const double w[3] = {0.15, 0.5, 0.35};
+    P3 c{{0., 0., 0.}};
+    for(int k = 0; k < 3; ++k)
+      for(int d = 0; d < 3; ++d)
+        c[d] += w[k] * s.points[f[k]][d];
+    const int m = static_cast<int>(s.points.size());
+    s.points.push_back(c);
+    s.faces.push_back({{f[0], f[1], m}});
+    s.faces.push_back({{f[1], f[2], m}});
+    s.faces.push_back({{f[2], f[0], m}});
+  }
+  return s;
+}
+
+// Surface of a cube, each side an n x n grid, outward oriented.
+Soup cube_surface(int n, std::vector<int>* face_centers)
+{
+  Soup s;
+  std::map<std::array<int, 3>, int> index;
+  auto id = [&](std::array<int, 3> p) {
+    auto it = index.find(p);
+    if(it != index.end())
+      return it->second;
+    const int v = static_cast<int>(s.points.size());
+    index.emplace(p, v);
+    s.points.push_back({{double(p[0]) / n, double(p[1]) / n, double(p[2]) / n}});
+    return v;
+  };
+  for(int axis = 0; axis < 3; ++axis)
+    for(int side = 0; side < 2; ++side)
+    {
+      const int u = (axis + 1) % 3, w = (axis + 2) % 3;
+      auto point = [&](int i, int j) {
+        std::array<int, 3> p;
+        p[axis] = side * n;
+        p[u] = i;
+        p[w] = j;
+        return id(p);
+      };
+      for(int i = 0; i < n; ++i)
+        for(int j = 0; j < n; ++j)
+        {
+          int a = point(i, j), b = point(i + 1, j), c = point(i + 1, j + 1), d = point(i, j + 1);
+          if(side == 0)
+          {
+            std::swap(b, d);
+          }
+          s.faces.push_back({{a, b, c}});
+          s.faces.push_back({{a, c, d}});
+        }
+      if(face_centers)
+        face_centers->push_back(point(n / 2, n / 2));
+    }
+  return s;
+}
+
+// cube_surface(n) without its last grid cell; every face along the hole gets a new vertex
+// close to its boundary edge (at `frac` of the way from the edge midpoint to the opposite
+// vertex), so that the boundary triangles are obtuse (about 140-160 degrees).
+Soup cube_with_obtuse_hole(int n, double frac)
+{
+  Soup s = cube_surface(n, nullptr);
+  s.faces.erase(s.faces.end() - 2, s.faces.end());
+  std::set<std::pair<int, int>> directed;
+  for(const auto& f : s.faces)
+    for(int c = 0; c < 3; ++c) directed.insert({f[c], f[(c + 1) % 3]});
+  const std::size_t nf = s.faces.size();
+  for(std::size_t fi = 0; fi < nf; ++fi)
+    for(int c = 0; c < 3; ++c)
+    {
+      const std::array<int, 3> f = s.faces[fi];
+      const int a = f[c], b = f[(c + 1) % 3], k = f[(c + 2) % 3];
+      if(directed.count({b, a}))
+        continue; // not a boundary edge
+      P3 p;
+      for(int d = 0; d < 3; ++d)
+        p[d] = 0.5 * (s.points[a][d] + s.points[b][d]) * (1 - frac) + frac * s.points[k][d];
+      const int m = static_cast<int>(s.points.size());
+      s.points.push_back(p);
+      s.faces[fi] = {{a, b, m}};
+      s.faces.push_back({{b, k, m}});
+      s.faces.push_back({{k, a, m}});
+      break;
+    }
+  return s;
+}
+
+double min_angle_degrees(const Tri& t)
+{
+  double m = 180;
+  for(int f = 0; f < t.number_of_faces(); ++f)
+    for(int c = 0; c < 3; ++c)
+      m = std::min(m, t.corner_angle(f, c) * 180 / pi);
+  return m;
+}
+
+double max_abs_diff(const std::vector<double>& a, const std::vector<double>& b)
+{
+  double m = 0;
+  for(std::size_t i = 0; i < a.size(); ++i)
+    m = std::max(m, std::abs(a[i] - b[i]));
+  return m;
+}
+
+// Best similarity z -> s z + t (complex least squares) from a to b; returns max |s a + t - b|.
+double similarity_error(const std::vector<std::array<double, 2>>& a, const std::vector<std::array<double, 2>>& b)
+{
+  typedef std::complex<double> C;
+  const std::size_t n = a.size();
+  C ma(0), mb(0);
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    ma += C(a[i][0], a[i][1]);
+    mb += C(b[i][0], b[i][1]);
+  }
+  ma /= double(n);
+  mb /= double(n);
+  C num(0);
+  double den = 0;
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const C x = C(a[i][0], a[i][1]) - ma, y = C(b[i][0], b[i][1]) - mb;
+    num += std::conj(x) * y;
+    den += std::norm(x);
+  }
+  const C s = num / den;
+  double err = 0;
+  for(std::size_t i = 0; i < n; ++i)
+    err = std::max(err, std::abs(s * (C(a[i][0], a[i][1]) - ma) + mb - C(b[i][0], b[i][1])));
+  return err;
+}
+
+std::vector<double> own_curvatures(const Tri& t) { return t.vertex_curvatures(); }
+
+} // namespace
+
+// ---------------------------------------------------------------------------------------------
+// Intrinsic triangulation basics
+
+TEST(IntrinsicTriangulation, SliverAnglesAreAccurate)
+{
+  // Triangle with sides 1, 1, eps: the apex angle is 2 asin(eps/2) ~ eps.
+  const double eps = 1e-9;
+  std::vector<std::array<int, 3>> f{{{0, 1, 2}}};
+  std::vector<std::array<double, 3>> l{{{1., 1., eps}}}; // sides (0,1), (1,2), (2,0)
+  Tri t(3, f, l);
+  // the angle at corner 0 is opposite side (1,2) of length 1; at corner 1 opposite (2,0) = eps
+  const double apex = t.corner_angle(0, 1);
+  EXPECT_NEAR(apex / (2 * std::asin(eps / 2)), 1., 1e-12);
+  EXPECT_NEAR(t.corner_angle(0, 0) + t.corner_angle(0, 1) + t.corner_angle(0, 2), pi, 1e-14);
+}
+
+TEST(IntrinsicTriangulation, FlipKeepsCurvatureAndMakesDelaunay)
+{
+  Soup s = bad_convex_polygon();
+  Tri t = from_soup(s);
+  ASSERT_FALSE(t.is_delaunay());
+  const std::vector<double> k0 = t.vertex_curvatures();
+  const std::size_t n = t.make_delaunay();
+  EXPECT_GT(n, 0u);
+  EXPECT_TRUE(t.is_delaunay());
+  EXPECT_EQ(t.number_of_flips(), n);
+  EXPECT_LT(max_abs_diff(k0, t.vertex_curvatures()), 1e-12);
+  // flipping an edge twice restores it
+  int e = 0;
+  while(t.is_border_edge(e)) ++e;
+  const std::vector<double> l = t.edge_lengths();
+  ASSERT_TRUE(t.flip(e));
+  ASSERT_TRUE(t.flip(e));
+  EXPECT_NEAR(t.length(e), l[e], 1e-12 * l[e]);
+}
+
+TEST(IntrinsicTriangulation, InvalidInputIsReported)
+{
+  std::vector<std::array<int, 3>> f{{{0, 1, 2}}};
+  try
+  {
+    Tri t(3, f, std::vector<std::array<double, 3>>{{{1., 1., 3.}}});
+    FAIL() << "no exception";
+  }
+  catch(const CR::Error& e) { EXPECT_EQ(e.code(), CR::Error_code::DEGENERATE_METRIC); }
+  try
+  {
+    Tri t(4, f, std::vector<std::array<double, 3>>{{{1., 1., 1.}}});
+    FAIL() << "no exception";
+  }
+  catch(const CR::Error& e) { EXPECT_EQ(e.code(), CR::Error_code::INVALID_INPUT); }
+}
+
+TEST(IntrinsicTriangulation, RicciEnergyGradientIsCurvatureError)
+{
+  // The line search relies on dE/du = K - K_target: compare with central differences.
+  Soup s = cad_sliver_disc(4, 9, 0.4, 0.2);
+  Tri t = from_soup(s);
+  t.make_delaunay();
+  const int nv = t.number_of_vertices();
+  const std::vector<double> targets = CR::disc_flattening_targets(t);
+  std::vector<double> theta(nv);
+  for(int v = 0; v < nv; ++v)
+    theta[v] = (t.is_border_vertex(v) ? pi : 2 * pi) - targets[v];
+  const std::vector<double> k = t.vertex_curvatures();
+  const std::vector<double> l0 = t.edge_lengths();
+  auto energy = [&](int v, double h) {
+    std::vector<double> u(nv, 0.);
+    u[v] = h;
+    Tri copy = t;
+    copy.scale_vertices(u);
+    return CR::internal::ricci_flow::ricci_energy(copy, copy.edge_lengths(), theta, u);
+  };
+  for(int v = 0; v < nv; v += 3)
+  {
+    const double h = 1e-5;
+    const double fd = (energy(v, h) - energy(v, -h)) / (2 * h);
+    EXPECT_NEAR(fd, k[v] - targets[v], 1e-6) << "vertex " << v;
+  }
+  EXPECT_EQ(l0, t.edge_lengths());
+}
+
+// ---------------------------------------------------------------------------------------------
+// Ricci flow
+
+TEST(RicciFlow, PlanarMeshWithOwnCurvaturesGivesConstantFactors)
+{
+  // Start from the planar metric scaled by random factors u0; targets are the planar curvatures.
+  // The flow must undo u0 exactly: u + u0 constant.
+  Soup s = planar_lattice(8);
+  Mesh m = to_mesh(s);
+  Tri t(m, CGAL::parameters::vertex_point_map(m.points()));
+  const std::vector<double> targets = own_curvatures(t);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> U(-0.05, 0.05);
+  std::vector<double> u0(t.number_of_vertices());
+  for(double& x : u0) x = U(rng);
+  t.scale_vertices(u0);
+  ASSERT_GT(max_abs_diff(targets, t.vertex_curvatures()), 1e-3);
+  auto r = CR::discrete_ricci_flow(t, targets, CR::parameters::curvature_tolerance(1e-13));
+  ASSERT_TRUE(r.converged) << r.message << " error " << r.max_curvature_error;
+  EXPECT_GT(r.iterations, 1);
+  double spread = 0;
+  for(int v = 0; v < t.number_of_vertices(); ++v)
+    spread = std::max(spread, std::abs((r.conformal_factors[v] + u0[v]) - (r.conformal_factors[0] + u0[0])));
+  EXPECT_LT(spread, 1e-12);
+}
+
+TEST(RicciFlow, BadConvexPolygonLayoutReproducesInput)
+{
+  Soup s = bad_convex_polygon();
+  Tri t = from_soup(s);
+  const std::vector<double> targets = own_curvatures(t); // boundary turning angles, 0 inside
+  ASSERT_LT(min_angle_degrees(t), 5.);
+  auto r = CR::discrete_ricci_flow(t, targets);
+  ASSERT_TRUE(r.converged) << r.message;
+  EXPECT_GT(r.number_of_flips, 0u);
+  EXPECT_TRUE(t.is_delaunay());
+  const std::vector<std::array<double, 2>> layout = t.layout();
+  std::vector<std::array<double, 2>> input;
+  for(const P3& p : s.points) input.push_back({{p[0], p[1]}});
+  // Vertices added by boundary splits come after the input's; compare the input's.
+  ASSERT_EQ(layout.size(), input.size() + r.number_of_splits);
+  EXPECT_EQ(r.target_curvatures.size(), layout.size());
+  EXPECT_LT(similarity_error(std::vector<std::array<double, 2>>(layout.begin(), layout.begin() + input.size()), input), 1e-12);
+  // The correspondence, followed to the input, lands on the same planar point.
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> U(0., 1.);
+  double err = 0;
+  std::vector<std::array<double, 2>> mapped_layout, mapped_input;
+  for(int i = 0; i < 2000; ++i)
+  {
+    const int f = static_cast<int>(U(rng) * t.number_of_faces()) % t.number_of_faces();
+    double a = U(rng), b = U(rng);
+    if(a + b > 1) { a = 1 - a; b = 1 - b; }
+    Tri::Face_location p{f, {{1 - a - b, a, b}}};
+    std::array<double, 2> q{{0, 0}}, w{{0, 0}};
+    for(int c = 0; c < 3; ++c)
+      for(int d = 0; d < 2; ++d)
+        q[d] += p.coordinates[c] * layout[t.vertex(f, c)][d];
+    const Tri::Face_location in = t.to_input(p);
+    for(int c = 0; c < 3; ++c)
+      for(int d = 0; d < 2; ++d)
+        w[d] += in.coordinates[c] * input[s.faces[in.face][c]][d];
+    mapped_layout.push_back(q);
+    mapped_input.push_back(w);
+  }
+  err = similarity_error(mapped_layout, mapped_input);
+  EXPECT_LT(err, 1e-12);
+}
+
+TEST(RicciFlow, CadSliverDiscNeedsFlips)
+{
+  Soup s = cad_sliver_disc(20, 61, 0.4, 0.15);
+  {
+    Tri t = from_soup(s);
+    ASSERT_LT(min_angle_degrees(t), 0.1);
+    const std::vector<double> targets = CR::disc_flattening_targets(t);
+    auto r = CR::discrete_ricci_flow(t, targets, CR::parameters::curvature_tolerance(1e-9));
+    EXPECT_TRUE(r.converged) << r.message << " error " << r.max_curvature_error;
+    EXPECT_LT(r.max_curvature_error, 1e-9);
+    EXPECT_LE(r.iterations, 30);
+    EXPECT_GT(r.number_of_flips, 0u);
+    EXPECT_TRUE(t.is_delaunay());
+    const std::vector<double> k = t.vertex_curvatures();
+    EXPECT_LT(max_abs_diff(k, targets), 1e-9);
+  }
+  {
+    // Newton on the fixed sliver triangulation: the target metric violates the triangle
+    // inequality on that triangulation, so the line search cannot proceed (or never converges).
+    Tri t = from_soup(s);
+    const std::vector<double> targets = CR::disc_flattening_targets(t);
+    auto r = CR::discrete_ricci_flow(t, targets,
+                                     CR::parameters::use_edge_flips(false, CGAL::parameters::number_of_iterations(50)));
+    EXPECT_FALSE(r.converged);
+    EXPECT_GT(r.max_curvature_error, 1e-9);
+    EXPECT_EQ(r.number_of_flips, 0u);
+    EXPECT_TRUE(t.is_valid());
+    std::cout << "without flips: " << r.message << ", " << r.iterations << " iterations, error "
+              << r.max_curvature_error << std::endl;
+  }
+}
+
+TEST(RicciFlow, ClosedGenusZeroWithCones)
+{
+  std::vector<int> centers;
+  Soup s = cube_surface(6, &centers);
+  Tri t = from_soup(s);
+  ASSERT_EQ(t.euler_characteristic(), 2);
+  std::vector<double> targets(t.number_of_vertices(), 0.);
+  for(int c : centers) targets[c] = 4 * pi / 6;
+  auto r = CR::discrete_ricci_flow(t, targets);
+  ASSERT_TRUE(r.converged) << r.message;
+  EXPECT_LT(max_abs_diff(t.vertex_curvatures(), targets), 1e-9);
+  EXPECT_TRUE(t.is_delaunay());
+}
+
+TEST(RicciFlow, UnflippableEdgesSurvive)
+{
+  Soup s = cad_sliver_disc(8, 21, 0.3, 0.1);
+  Mesh m = to_mesh(s);
+  auto ecm = m.add_property_map<Mesh::Edge_index, bool>("e:c", false).first;
+  // constrain the middle row of long edges (between rows 4 and 5 zipped faces are many: pick
+  // every edge whose both endpoints are on row 4)
+  int marked = 0;
+  for(auto e : m.edges())
+  {
+    const auto& p = m.point(m.source(m.halfedge(e)));
+    const auto& q = m.point(m.target(m.halfedge(e)));
+    if(std::abs(p.y() - 0.15) < 1e-12 && std::abs(q.y() - 0.15) < 1e-12) { put(ecm, e, true); ++marked; }
+  }
+  ASSERT_GT(marked, 5);
+  Tri t(m, CGAL::parameters::edge_is_constrained_map(ecm));
+  std::vector<std::pair<int, int>> ends;
+  int constrained = 0;
+  for(int e = 0; e < t.number_of_edges(); ++e)
+    if(t.is_unflippable(e))
+    {
+      ++constrained;
+      ends.push_back({t.source(t.halfedge(e)), t.target(t.halfedge(e))});
+    }
+  EXPECT_EQ(constrained, marked);
+  auto r = CR::discrete_ricci_flow(t, CR::disc_flattening_targets(t));
+  EXPECT_TRUE(r.converged) << r.message;
+  EXPECT_TRUE(t.is_delaunay());
+  int k = 0;
+  for(int e = 0; e < t.number_of_edges(); ++e)
+    if(t.is_unflippable(e))
+    {
+      std::pair<int, int> now{t.source(t.halfedge(e)), t.target(t.halfedge(e))};
+      EXPECT_TRUE(now == ends[k] || now == std::make_pair(ends[k].second, ends[k].first));
+      ++k;
+    }
+}
+
+TEST(RicciFlow, CorrespondenceRoundTripAndOrientation)
+{
+  Soup s = cad_sliver_disc(20, 61, 0.4, 0.15);
+  Tri t = from_soup(s);
+  auto r = CR::discrete_ricci_flow(t, CR::disc_flattening_targets(t), CR::parameters::curvature_tolerance(1e-9));
+  ASSERT_TRUE(r.converged);
+  ASSERT_GT(t.number_of_flips(), 100u);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> U(0., 1.);
+  double worst = 0, worst_back = 0;
+  int face_mismatch = 0;
+  for(int i = 0; i < 10000; ++i)
+  {
+    const int f = static_cast<int>(U(rng) * t.number_of_faces()) % t.number_of_faces();
+    double a = U(rng), b = U(rng);
+    if(a + b > 1) { a = 1 - a; b = 1 - b; }
+    const Tri::Face_location p{f, {{1 - a - b, a, b}}};
+    const Tri::Face_location in = t.to_input(p);
+    ASSERT_GE(in.face, 0);
+    ASSERT_LT(in.face, static_cast<int>(s.faces.size()));
+    EXPECT_GT((std::min)({in.coordinates[0], in.coordinates[1], in.coordinates[2]}), -1e-9);
+    const Tri::Face_location back = t.from_input(in);
+    if(back.face != p.face) { ++face_mismatch; continue; }
+    for(int c = 0; c < 3; ++c)
+      worst = std::max(worst, std::abs(back.coordinates[c] - p.coordinates[c]));
+    // and input -> intrinsic -> input
+    const Tri::Face_location in2 = t.to_input(t.from_input(in));
+    if(in2.face != in.face) { ++face_mismatch; continue; }
+    for(int c = 0; c < 3; ++c)
+      worst_back = std::max(worst_back, std::abs(in2.coordinates[c] - in.coordinates[c]));
+  }
+  EXPECT_EQ(face_mismatch, 0);
+  EXPECT_LT(worst, 1e-12);
+  // Input slivers (height/length ~ 1e-4) amplify the rounding of barycentric coordinates.
+  EXPECT_LT(worst_back, 1e-10);
+
+  // The planar layout of the flat metric: every intrinsic triangle is positively oriented.
+  std::vector<Tri::Point_2> corners;
+  t.layout(0, &corners);
+  CGAL::Exact_predicates_inexact_constructions_kernel::Orientation_2 orientation;
+  typedef CGAL::Exact_predicates_inexact_constructions_kernel::Point_2 EP;
+  int bad = 0;
+  for(int f = 0; f < t.number_of_faces(); ++f)
+  {
+    const EP p0(corners[3 * f][0], corners[3 * f][1]), p1(corners[3 * f + 1][0], corners[3 * f + 1][1]),
+        p2(corners[3 * f + 2][0], corners[3 * f + 2][1]);
+    bad += orientation(p0, p1, p2) == CGAL::POSITIVE ? 0 : 1;
+  }
+  EXPECT_EQ(bad, 0);
+}
+
+TEST(RicciFlow, BoundarySplitsKeepConvergenceAndCorrespondence)
+{
+  // A cube with one grid cell removed, the faces along the hole made obtuse: a disc whose
+  // boundary has only 4 vertices, flattened onto a square. The boundary triangles degenerate
+  // (their angle opposite the boundary edge tends to pi) unless boundary edges are split.
+  Soup s = cube_with_obtuse_hole(4, 0.2);
+  {
+    Tri t = from_soup(s);
+    auto r = CR::discrete_ricci_flow(t, CR::disc_flattening_targets(t),
+                                     CR::parameters::edge_split_angle(pi, CGAL::parameters::number_of_iterations(30)));
+    EXPECT_FALSE(r.converged);
+    EXPECT_EQ(r.number_of_splits, 0u);
+  }
+  Tri t = from_soup(s);
+  const int nv0 = t.number_of_vertices();
+  auto r = CR::discrete_ricci_flow(t, CR::disc_flattening_targets(t));
+  ASSERT_TRUE(r.converged) << r.message;
+  ASSERT_GT(r.number_of_splits, 0u);
+  EXPECT_EQ(t.number_of_vertices(), nv0 + int(r.number_of_splits));
+  EXPECT_LT(max_abs_diff(t.vertex_curvatures(), r.target_curvatures), 1e-9);
+  // New vertices are on the boundary and map onto boundary edges of the input.
+  std::set<std::pair<int, int>> directed;
+  for(const auto& f : s.faces)
+    for(int c = 0; c < 3; ++c) directed.insert({f[c], f[(c + 1) % 3]});
+  std::vector<std::pair<int, int>> corner_of(t.number_of_vertices(), {-1, -1});
+  for(int f = 0; f < t.number_of_faces(); ++f)
+    for(int c = 0; c < 3; ++c) corner_of[t.vertex(f, c)] = {f, c};
+  for(int v = nv0; v < t.number_of_vertices(); ++v)
+  {
+    EXPECT_TRUE(t.is_border_vertex(v));
+    Tri::Face_location at{corner_of[v].first, {{0., 0., 0.}}};
+    at.coordinates[corner_of[v].second] = 1.;
+    const Tri::Face_location in = t.to_input(at);
+    int zero = -1;
+    for(int c = 0; c < 3; ++c)
+      if(std::abs(in.coordinates[c]) < 1e-12) zero = c;
+    ASSERT_GE(zero, 0) << "vertex " << v << " is not on an input edge";
+    const int a = s.faces[in.face][(zero + 1) % 3], b = s.faces[in.face][(zero + 2) % 3];
+    EXPECT_EQ(directed.count({b, a}), 0u) << "vertex " << v << " is on an interior input edge";
+  }
+  // Round trip through flips and splits.
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> U(0., 1.);
+  double worst = 0;
+  for(int i = 0; i < 2000; ++i)
+  {
+    const int f = static_cast<int>(U(rng) * t.number_of_faces()) % t.number_of_faces();
+    double a = U(rng), b = U(rng);
+    if(a + b > 1) { a = 1 - a; b = 1 - b; }
+    const Tri::Face_location p{f, {{1 - a - b, a, b}}};
+    const Tri::Face_location back = t.from_input(t.to_input(p));
+    ASSERT_EQ(back.face, p.face);
+    for(int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(back.coordinates[c] - p.coordinates[c]));
+  }
+  EXPECT_LT(worst, 1e-12);
+}
+
+TEST(RicciFlow, ExactConformalPathIsPathIndependent)
+{
+  // Flatten a planar sliver disc onto a polygon inscribed in a circle, then flow back to its own
+  // curvatures: with flips at the moment edges stop being Delaunay, the discrete conformal
+  // metric does not depend on the path, so the round trip returns the input metric exactly (up
+  // to scale) although hundreds of flips happened on the way.
+  Soup s = cad_sliver_disc(8, 21, 0.4, 0.);
+  Tri t = from_soup(s);
+  const std::vector<double> own = own_curvatures(t);
+  auto np = CR::parameters::exact_conformal_path(true, CR::parameters::edge_split_angle(pi));
+  auto r1 = CR::discrete_ricci_flow(t, CR::disc_flattening_targets(t), np);
+  ASSERT_TRUE(r1.converged) << r1.message;
+  ASSERT_GT(r1.number_of_flips, 100u);
+  auto r2 = CR::discrete_ricci_flow(t, own, CR::parameters::curvature_tolerance(1e-13, np));
+  ASSERT_TRUE(r2.converged) << r2.message;
+  double spread = 0;
+  for(int v = 0; v < t.number_of_vertices(); ++v)
+    spread = std::max(spread, std::abs(r1.conformal_factors[v] + r2.conformal_factors[v] -
+                                       r1.conformal_factors[0] - r2.conformal_factors[0]));
+  EXPECT_LT(spread, 1e-12);
+  std::vector<std::array<double, 2>> input;
+  for(const P3& p : s.points) input.push_back({{p[0], p[1]}});
+  EXPECT_LT(similarity_error(t.layout(), input), 1e-12);
+  // The flips explored along the path were replayed on the triangulation: the correspondence holds.
+  std::mt19937 rng(9);
+  std::uniform_real_distribution<double> U(0., 1.);
+  double worst = 0;
+  for(int i = 0; i < 2000; ++i)
+  {
+    const int f = static_cast<int>(U(rng) * t.number_of_faces()) % t.number_of_faces();
+    double a = U(rng), b = U(rng);
+    if(a + b > 1) { a = 1 - a; b = 1 - b; }
+    const Tri::Face_location p{f, {{1 - a - b, a, b}}};
+    const Tri::Face_location back = t.from_input(t.to_input(p));
+    ASSERT_EQ(back.face, p.face);
+    for(int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(back.coordinates[c] - p.coordinates[c]));
+  }
+  EXPECT_LT(worst, 1e-12);
+}
+
+TEST(RicciFlow, GaussBonnetViolationIsReportedBeforeAnyIteration)
+{
+  Soup s = bad_convex_polygon();
+  Tri t = from_soup(s);
+  std::vector<double> targets(t.number_of_vertices(), 0.); // sums to 0, not 2 pi
+  int calls = 0;
+  try
+  {
+    CR::discrete_ricci_flow(t, targets, CGAL::parameters::callback([&](int, double) { ++calls; }));
+    FAIL() << "no exception";
+  }
+  catch(const CR::Error& e)
+  {
+    EXPECT_EQ(e.code(), CR::Error_code::GAUSS_BONNET_VIOLATED);
+    EXPECT_NE(std::string(e.what()).find("Gauss-Bonnet"), std::string::npos);
+  }
+  EXPECT_EQ(calls, 0);
+  EXPECT_EQ(t.number_of_flips(), 0u);
+  EXPECT_FALSE(t.is_delaunay()); // untouched
+}
+
+TEST(RicciFlow, MultiprecisionFlow)
+{
+  typedef boost::multiprecision::mpfr_float MP;
+  MP::default_precision(50);
+  typedef CR::Intrinsic_triangulation<MP> MTri;
+  Soup s = cad_sliver_disc(4, 9, 0.4, 0.2);
+  MTri t = from_soup<MP>(s);
+  const std::vector<MP> targets = CR::disc_flattening_targets(t);
+  auto r = CR::discrete_ricci_flow(t, targets, CR::parameters::curvature_tolerance(MP("1e-35")));
+  ASSERT_TRUE(r.converged) << r.message << " " << r.max_curvature_error;
+  const std::vector<MP> k = t.vertex_curvatures();
+  for(std::size_t v = 0; v < k.size(); ++v)
+    EXPECT_LT(static_cast<double>(abs(k[v] - targets[v])), 1e-35);
+  // same flow in double agrees to double precision
+  Tri td = from_soup(s);
+  auto rd = CR::discrete_ricci_flow(td, CR::disc_flattening_targets(td), CR::parameters::curvature_tolerance(1e-13));
+  ASSERT_TRUE(rd.converged);
+  for(std::size_t v = 0; v < k.size(); ++v)
+    EXPECT_NEAR(static_cast<double>(r.conformal_factors[v]), rd.conformal_factors[v], 1e-9);
+}
