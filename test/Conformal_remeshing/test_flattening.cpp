@@ -239,6 +239,12 @@ TEST(ConformalFlatten, PlanarRoundDiscIsASimilarity)
     w.emplace_back(f.uv[v.idx()].x(), f.uv[v.idx()].y());
   }
   EXPECT_LT(similarity_error(z, w), 1e-9);
+
+  // A similarity has one scale: the conformal factor is constant, the log of that scale.
+  const auto range = std::minmax_element(f.conformal_factor.begin(), f.conformal_factor.end());
+  EXPECT_LT(*range.second - *range.first, 1e-8);
+  const double layout_scale = std::abs(w[1] - w[0]) / std::abs(z[1] - z[0]);
+  EXPECT_NEAR(std::exp(f.conformal_factor[0]), layout_scale, 1e-8 * layout_scale);
 }
 
 TEST(ConformalFlatten, SphericalCapIsCloseToTheStereographicProjection)

@@ -68,7 +68,7 @@ struct Flattening_report
   /// input edges split at their midpoints because they were longer than `maximum_edge_length`
   std::size_t edge_splits = 0;
   std::size_t welded_vertices = 0;  ///< vertices of the welded disc (patch, fills, annulus)
-  /// range of the local scale of the map, planar length over 3D length of the input edges
+  /// range of the local scale of the map (planar length over surface length) at the input vertices
   double min_scale = 0.;
   double max_scale = 0.;
   /// the exact check of the final triangulation of the patch region with its boundary loops
@@ -96,7 +96,8 @@ struct Conformal_flattening
 {
   /// the planar position of input vertex `i` (by the vertex index map)
   std::vector<Epick::Point_2> uv;
-  /// `log` of the local scale at each input vertex (mean over its input edges of planar over 3D length)
+  /// the conformal factor at each input vertex: the `log` of the local scale of the map there
+  /// (planar length over surface length), from the flow's vertex scaling
   std::vector<double> conformal_factor;
   /// the outer boundary of the domain, counterclockwise
   std::vector<Domain_point> outer_boundary;
@@ -421,32 +422,21 @@ Conformal_flattening conformal_flatten(const TriangleMesh& mesh,
   report.embedding = check_planar_embedding(result.layout, triangles, index_loops);
   report.seconds_check = seconds_since(check_start);
 
-  // Scale of the map along the input edges, and the conformal factor at the input vertices.
-  report.min_scale = std::numeric_limits<double>::infinity();
-  report.max_scale = 0.;
-  std::vector<double> scale_sum(patch.number_of_input_vertices, 0.);
-  std::vector<int> scale_count(patch.number_of_input_vertices, 0);
+  // The conformal factor: vertex scaling multiplies lengths at vertex i by exp(2 u_i) (paper
+  // Eqn. 3.5), after the welding's uniform scale, and the layout is isometric to the final metric.
+  result.conformal_factor.resize(patch.number_of_input_vertices);
+  for(std::size_t v = 0; v < patch.number_of_input_vertices; ++v)
+    result.conformal_factor[v] = 2. * flow.conformal_factors[v] + std::log(disc.scale);
+  const auto range = std::minmax_element(result.conformal_factor.begin(), result.conformal_factor.end());
+  report.min_scale = std::exp(*range.first);
+  report.max_scale = std::exp(*range.second);
   for(auto f : faces(mesh))
   {
     const halfedge_descriptor h0 = halfedge(f, mesh);
-    std::array<std::size_t, 3> v{{std::size_t(get(vim, source(h0, mesh))), std::size_t(get(vim, target(h0, mesh))),
-                                  std::size_t(get(vim, target(next(h0, mesh), mesh)))}};
-    if(CGAL::orientation(result.uv[v[0]], result.uv[v[1]], result.uv[v[2]]) != CGAL::POSITIVE)
+    if(CGAL::orientation(result.uv[get(vim, source(h0, mesh))], result.uv[get(vim, target(h0, mesh))],
+                         result.uv[get(vim, target(next(h0, mesh), mesh))]) != CGAL::POSITIVE)
       ++report.folded_input_triangles_in_uv;
-    for(int c = 0; c < 3; ++c)
-    {
-      const std::size_t a = v[c], b = v[(c + 1) % 3];
-      const double s = std::sqrt(CGAL::squared_distance(result.uv[a], result.uv[b]))
-                       / internal::welding::distance(patch.points[a], patch.points[b]);
-      report.min_scale = (std::min)(report.min_scale, s);
-      report.max_scale = (std::max)(report.max_scale, s);
-      scale_sum[a] += s;
-      ++scale_count[a];
-    }
   }
-  result.conformal_factor.resize(patch.number_of_input_vertices);
-  for(std::size_t v = 0; v < scale_sum.size(); ++v)
-    result.conformal_factor[v] = scale_count[v] > 0 ? std::log(scale_sum[v] / scale_count[v]) : 0.;
 
   if(!report.converged)
     report.status = Error_code::NOT_CONVERGED;
