@@ -228,15 +228,20 @@ Planar_mesh mesh_planar_domain(const std::vector<std::vector<Boundary_sample> >&
     {
       if(cdt.are_there_incident_constraints(v))
         continue;
-      double x = 0., y = 0.;
-      int n = 0;
+      // The mean of the neighbours in the surface's metric: the plane is scaled by the size field,
+      // so each neighbour weighs 1 / size^2 at the edge's midpoint.
+      double x = 0., y = 0., n = 0.;
+      const double vx = CGAL::to_double(v->point().x()), vy = CGAL::to_double(v->point().y());
       auto c = cdt.incident_vertices(v), done = c;
       do
         if(!cdt.is_infinite(c))
         {
-          x += CGAL::to_double(c->point().x());
-          y += CGAL::to_double(c->point().y());
-          ++n;
+          const double cx = CGAL::to_double(c->point().x()), cy = CGAL::to_double(c->point().y());
+          const double local = size(Epick::Point_2(0.5 * (vx + cx), 0.5 * (vy + cy)));
+          const double w = 1. / (local * local);
+          x += w * cx;
+          y += w * cy;
+          n += w;
         }
       while(++c != done);
       const Point moved(x / n, y / n);
