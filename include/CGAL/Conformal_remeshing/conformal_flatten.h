@@ -136,6 +136,9 @@ struct Conformal_flattening
   internal::welding::Indexed_patch patch;
   /// the faces of the welded disc before the flow (the patch's faces first)
   std::vector<std::array<int, 3> > welded_faces;
+  /// the patch faces around each patch vertex `v`: `faces_of_vertex[faces_of_vertex_start[v] ..
+  /// faces_of_vertex_start[v + 1])`
+  std::vector<int> faces_of_vertex_start, faces_of_vertex;
 
 private:
   // A location in a face of the welded disc, as a location in a patch face. A point of the patch
@@ -156,15 +159,20 @@ private:
     }
     std::array<double, 3> result{{0., 0., 0.}};
     int best_face = -1, best_shared = 0;
-    for(std::size_t f = 0; f < patch.faces.size(); ++f) // rare: only points exactly on a seam
+    int anchor = -1; // a seam vertex with weight: the patch face sought is one of its faces
+    for(int c = 0; c < 3 && anchor < 0; ++c)
+      if(b[c] > 0.)
+        anchor = corners[c];
+    for(int k = (anchor < 0 ? 0 : faces_of_vertex_start[anchor]); anchor >= 0 && k < faces_of_vertex_start[anchor + 1]; ++k)
     {
+      const int f = faces_of_vertex[k];
       int shared = 0;
       for(int c = 0; c < 3; ++c)
         shared += (b[c] > 0. && std::find(patch.faces[f].begin(), patch.faces[f].end(), corners[c]) != patch.faces[f].end());
       if(shared > best_shared)
       {
         best_shared = shared;
-        best_face = int(f);
+        best_face = f;
       }
     }
     if(best_face < 0 || kept <= 0.)
@@ -325,6 +333,19 @@ Conformal_flattening conformal_flatten(const TriangleMesh& mesh,
 
   const internal::welding::Welded_disc disc = internal::welding::weld(patch, welded, inner_radius);
   result.welded_faces = disc.faces;
+  result.faces_of_vertex_start.assign(patch.points.size() + 1, 0);
+  for(const auto& f : patch.faces)
+    for(int v : f)
+      ++result.faces_of_vertex_start[v + 1];
+  for(std::size_t v = 0; v < patch.points.size(); ++v)
+    result.faces_of_vertex_start[v + 1] += result.faces_of_vertex_start[v];
+  result.faces_of_vertex.resize(result.faces_of_vertex_start.back());
+  {
+    std::vector<int> fill(result.faces_of_vertex_start.begin(), result.faces_of_vertex_start.end() - 1);
+    for(std::size_t f = 0; f < patch.faces.size(); ++f)
+      for(int v : patch.faces[f])
+        result.faces_of_vertex[fill[v]++] = int(f);
+  }
   report.welded_vertices = disc.number_of_vertices;
   Intrinsic_triangulation<double>& tri = result.triangulation;
   tri = Intrinsic_triangulation<double>(disc.number_of_vertices, disc.faces, disc.lengths);
