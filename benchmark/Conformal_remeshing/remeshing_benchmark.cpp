@@ -13,6 +13,7 @@
 
 #include "cad_like_models.h"
 #include "test_surfaces.h"
+#include "timing.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/detect_features.h>
@@ -43,19 +44,6 @@ struct Measure
   double min_angle = 0., below_25 = 0., skewness = 0., edges_in_range = 0., hausdorff_to = 0., hausdorff_from = 0.;
   bool self_intersects = false;
 };
-
-double median_seconds(const std::function<void()>& run)
-{
-  std::vector<double> t;
-  for(int i = 0; i < 3; ++i)
-  {
-    const auto start = std::chrono::steady_clock::now();
-    run();
-    t.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-  }
-  std::sort(t.begin(), t.end());
-  return t[1];
-}
 
 Measure measure(const Mesh& input, const Mesh& output, double h, double seconds)
 {
@@ -161,12 +149,12 @@ int main(int argc, char** argv)
     const Mesh& input = models[k].second;
     Mesh ours;
     CR::Remeshing_report report;
-    const double ours_seconds = median_seconds([&] {
+    const double ours_seconds = bm::median_seconds([&] {
       report = CR::remesh_conformal(input, ours, CR::parameters::relative_target_edge_length(relative));
     });
     const double h = report.target_edge_length;
     Mesh peer;
-    const double peer_seconds = median_seconds([&] {
+    const double peer_seconds = bm::median_seconds([&] {
       peer = input;
       auto constrained = peer.add_property_map<Mesh::Edge_index, bool>("e:constrained", false).first;
       PMP::detect_sharp_edges(peer, 60., constrained);

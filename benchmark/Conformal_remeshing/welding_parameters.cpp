@@ -12,6 +12,7 @@
 
 #include "cad_like_models.h"
 #include "test_surfaces.h"
+#include "timing.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
@@ -104,28 +105,17 @@ int main(int argc, char** argv)
 
   // The peer, in the same run: CGAL's LSCM against the welded flattening (default delta).
   namespace SMP = CGAL::Surface_mesh_parameterization;
-  auto median_of_3 = [](auto&& run) {
-    std::vector<double> t;
-    for(int i = 0; i < 3; ++i)
-    {
-      const auto start = std::chrono::steady_clock::now();
-      run();
-      t.push_back(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-    }
-    std::sort(t.begin(), t.end());
-    return t[1];
-  };
   std::cout << "\n" << std::left << std::setw(24) << "model" << std::right << std::setw(11) << "welded s" << std::setw(11)
             << "LSCM s" << std::setw(9) << "ratio" << std::setw(22) << "welded overlaps" << std::setw(20) << "LSCM overlaps" << "\n";
   for(auto& model : models)
   {
     Mesh mesh = model.second;
     CR::Conformal_flattening f;
-    const double welded_seconds = median_of_3([&] { f = CR::conformal_flatten(mesh); });
+    const double welded_seconds = bm::median_seconds([&] { f = CR::conformal_flatten(mesh); });
     auto uv = mesh.add_property_map<Mesh::Vertex_index, CGAL::Epick::Point_2>("v:uv").first;
     const auto border = CGAL::Polygon_mesh_processing::longest_border(mesh).first;
     SMP::Error_code lscm_status = SMP::OK;
-    const double lscm_seconds = median_of_3([&] { lscm_status = SMP::parameterize(mesh, SMP::LSCM_parameterizer_3<Mesh>(), border, uv); });
+    const double lscm_seconds = bm::median_seconds([&] { lscm_status = SMP::parameterize(mesh, SMP::LSCM_parameterizer_3<Mesh>(), border, uv); });
     std::vector<std::array<std::size_t, 3> > triangles;
     for(const auto& t : f.triangles)
       triangles.push_back({{std::size_t(t[0]), std::size_t(t[1]), std::size_t(t[2])}});
