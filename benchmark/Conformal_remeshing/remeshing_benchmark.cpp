@@ -13,6 +13,7 @@
 
 #include "cad_like_models.h"
 #include "test_surfaces.h"
+#include "generated_patches.h"
 #include "timing.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -54,14 +55,7 @@ Measure measure(const Mesh& input, const Mesh& output, double h, double seconds)
   m.min_angle = q.minimum_angle.min;
   m.below_25 = q.share_with_minimum_angle_below(25.);
   m.skewness = q.skewness.mean;
-  std::size_t within = 0;
-  for(auto e : output.edges())
-  {
-    const double l = std::sqrt(CGAL::squared_distance(output.point(output.source(output.halfedge(e))),
-                                                      output.point(output.target(output.halfedge(e)))));
-    within += (l >= 0.7 * h && l <= 1.4 * h);
-  }
-  m.edges_in_range = double(within) / double(output.number_of_edges());
+  m.edges_in_range = CR::share_of_edges_with_length_in(output, 0.7 * h, 1.4 * h);
   const CR::Reference_comparison c = CR::compare_to_reference(output, input);
   m.hausdorff_to = c.relative_distance_to_reference;
   m.hausdorff_from = c.relative_distance_from_reference;
@@ -95,25 +89,7 @@ int main(int argc, char** argv)
     return 2;
   }
   double relative = 0.01;
-  std::vector<std::pair<std::string, Mesh> > models;
-  {
-    Mesh strip;
-    bm::Wavy_c_strip_parameters p;
-    p.amplitude = 0.6;
-    bm::make_wavy_c_strip(strip, p);
-    models.emplace_back("wavy C strip", strip);
-    Mesh cap;
-    bm::make_spherical_cap(cap, 120., 16, 48);
-    models.emplace_back("spherical cap", cap);
-    for(int holes : {1, 10})
-    {
-      Mesh sheet;
-      bm::Perforated_plate_parameters q;
-      q.number_of_random_holes = holes;
-      bm::make_perforated_sheet(sheet, q, 0.3);
-      models.emplace_back("CAD sheet, " + std::to_string(holes) + " holes", sheet);
-    }
-  }
+  std::vector<std::pair<std::string, Mesh> > models = bm::generated_patches<Mesh>(true);
   for(int i = 2; i < argc; ++i)
   {
     const std::string arg = argv[i];

@@ -12,6 +12,7 @@
 
 #include "cad_like_models.h"
 #include "test_surfaces.h"
+#include "generated_patches.h"
 #include "timing.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -40,19 +41,7 @@ int main(int argc, char** argv)
     std::cerr << "usage: welding_parameters OUT.json [MESH ...]\n";
     return 2;
   }
-  std::vector<std::pair<std::string, Mesh> > models;
-  {
-    Mesh strip;
-    bm::Wavy_c_strip_parameters p;
-    p.amplitude = 0.6;
-    bm::make_wavy_c_strip(strip, p);
-    models.emplace_back("wavy C strip", strip);
-    Mesh sheet;
-    bm::Perforated_plate_parameters q;
-    q.number_of_random_holes = 10;
-    bm::make_perforated_sheet(sheet, q, 0.3);
-    models.emplace_back("CAD sheet, 10 holes", sheet);
-  }
+  std::vector<std::pair<std::string, Mesh> > models = bm::generated_patches<Mesh>(false);
   for(int i = 2; i < argc; ++i)
   {
     Mesh mesh;

@@ -182,9 +182,7 @@ double similarity_error(const std::vector<std::complex<double> >& z, const std::
 TEST(ConformalFlatten, ConcaveStripIsEmbeddedWhereLscmOverlaps)
 {
   Mesh mesh;
-  bm::Wavy_c_strip_parameters p;
-  p.amplitude = 0.6;
-  bm::make_wavy_c_strip(mesh, p);
+  bm::make_wavy_c_strip(mesh);
   const CR::Conformal_flattening f = CR::conformal_flatten(mesh);
   expect_embedding(f, 0);
   // The uv of the input vertices, as a parameterization of the input triangles, has no overlap either.

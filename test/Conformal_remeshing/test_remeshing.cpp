@@ -51,14 +51,7 @@ void check_remeshing(const Mesh& input, double min_angle_bound)
   EXPECT_GE(q.minimum_angle.min, min_angle_bound);
   EXPECT_LT(q.share_with_minimum_angle_below(25.), 0.01);
 
-  std::size_t within = 0;
-  for(auto e : output.edges())
-  {
-    const double l = std::sqrt(CGAL::squared_distance(output.point(output.source(output.halfedge(e))),
-                                                      output.point(output.target(output.halfedge(e)))));
-    within += (l >= 0.7 * h && l <= 1.4 * h);
-  }
-  EXPECT_GT(double(within) / double(output.number_of_edges()), 0.95);
+  EXPECT_GT(CR::share_of_edges_with_length_in(output, 0.7 * h, 1.4 * h), 0.95);
 
   const CR::Mesh_check_report in = CR::check_mesh(input), out = CR::check_mesh(output);
   EXPECT_TRUE(out.is_valid()) << out.summary();
@@ -91,9 +84,7 @@ void check_remeshing(const Mesh& input, double min_angle_bound)
 TEST(RemeshConformal, WavyConcaveStrip)
 {
   Mesh mesh;
-  bm::Wavy_c_strip_parameters p;
-  p.amplitude = 0.6;
-  bm::make_wavy_c_strip(mesh, p);
+  bm::make_wavy_c_strip(mesh);
   check_remeshing(mesh, 20.);
 }
 

@@ -17,32 +17,6 @@
 
 namespace Conformal_remeshing_tools {
 
-// Calls `write(stream)` on a temporary file beside `path`, then renames it to `path`.
-// Throws std::runtime_error naming the file and the reason on any failure.
-inline void write_file_atomically(const std::string& path, const std::function<bool(std::ostream&)>& write)
-{
-  const std::string temporary = path + ".part";
-  {
-    std::ofstream out(temporary, std::ios::binary);
-    if(!out)
-      throw std::runtime_error("cannot write '" + path + "': " + std::strerror(errno));
-    const bool written = write(out);
-    out.flush();
-    if(!written || !out)
-    {
-      out.close();
-      std::remove(temporary.c_str());
-      throw std::runtime_error("cannot write '" + path + "': output failed");
-    }
-  }
-  if(std::rename(temporary.c_str(), path.c_str()) != 0)
-  {
-    const std::string reason = std::strerror(errno);
-    std::remove(temporary.c_str());
-    throw std::runtime_error("cannot write '" + path + "': " + reason);
-  }
-}
-
 // Calls `write(temporary_path)`, which writes a whole file at that path (with the same
 // extension as `path`, for writers that choose the format by extension), then renames it to
 // `path`. Throws std::runtime_error naming the file on any failure.
@@ -61,6 +35,16 @@ inline void write_file_atomically_at(const std::string& path, const std::functio
     std::remove(temporary.c_str());
     throw std::runtime_error("cannot write '" + path + "': " + reason);
   }
+}
+
+// Calls `write(stream)` on a temporary file beside `path`, then renames it to `path`.
+// Throws std::runtime_error naming the file and the reason on any failure.
+inline void write_file_atomically(const std::string& path, const std::function<bool(std::ostream&)>& write)
+{
+  write_file_atomically_at(path, [&](const std::string& temporary) {
+    std::ofstream out(temporary, std::ios::binary);
+    return out && write(out) && out.flush();
+  });
 }
 
 inline void write_file_atomically(const std::string& path, const std::string& content)

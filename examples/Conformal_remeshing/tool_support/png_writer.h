@@ -68,6 +68,7 @@ inline void put32(std::vector<std::uint8_t>& out, std::uint32_t v)
 inline void write_chunk(std::ostream& out, const char* type, const std::vector<std::uint8_t>& data)
 {
   std::vector<std::uint8_t> chunk;
+  chunk.reserve(12 + data.size()); // length, type, data, CRC
   put32(chunk, std::uint32_t(data.size()));
   chunk.insert(chunk.end(), type, type + 4);
   chunk.insert(chunk.end(), data.begin(), data.end());

@@ -279,6 +279,26 @@ Mesh_quality_report mesh_quality(const TriangleMesh& mesh,
 }
 
 /// \ingroup PkgConformalRemeshingRef
+/// The fraction of the edges of `mesh` whose length lies in `[min_length, max_length]`, e.g.
+/// within [0.7, 1.4] times a remeshing's target edge length.
+template <typename TriangleMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
+double share_of_edges_with_length_in(const TriangleMesh& mesh, double min_length, double max_length,
+                                     const NamedParameters& np = CGAL::parameters::default_values())
+{
+  auto vpm = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, CGAL::internal_np::vertex_point),
+                                                get_const_property_map(vertex_point, mesh));
+  std::size_t within = 0, total = 0;
+  for(auto e : edges(mesh))
+  {
+    const auto h = halfedge(e, mesh);
+    const double l = std::sqrt(CGAL::to_double(CGAL::squared_distance(get(vpm, source(h, mesh)), get(vpm, target(h, mesh)))));
+    within += (l >= min_length && l <= max_length);
+    ++total;
+  }
+  return total > 0 ? double(within) / double(total) : 0.;
+}
+
+/// \ingroup PkgConformalRemeshingRef
 /// How faithfully a mesh reproduces a reference surface.
 struct Reference_comparison
 {
