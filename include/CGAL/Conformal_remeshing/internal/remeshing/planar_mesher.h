@@ -14,6 +14,7 @@
 #include <CGAL/Delaunay_mesh_size_criteria_2.h>
 #include <CGAL/Delaunay_mesh_vertex_base_2.h>
 #include <CGAL/Delaunay_mesher_2.h>
+#include <CGAL/Delaunay_mesher_no_edge_refinement_2.h>
 
 #include <cmath>
 #include <list>
@@ -185,9 +186,11 @@ void mark_domain(CDT& cdt)
 /// centroid. Then `smoothing_iterations` passes of Laplacian smoothing of the free vertices:
 /// each moves to the mean of its neighbours when its star stays positively oriented, the points
 /// are triangulated again with the same constraints and refined again, so the bounds still hold.
+/// With `split_boundary == false` no point is added on the loops (their samples are shared with
+/// a neighbouring patch): a bad triangle whose circumcentre would encroach a loop edge is kept.
 template <typename Kernel, typename Size_field>
 Planar_mesh mesh_planar_domain(const std::vector<std::vector<Boundary_sample> >& loops, double min_angle_degrees,
-                               const Size_field& size, int smoothing_iterations)
+                               const Size_field& size, int smoothing_iterations, bool split_boundary = true)
 {
   typedef CGAL::Delaunay_mesh_vertex_base_2<Kernel> Vb;
   typedef CGAL::Delaunay_mesh_face_base_2<Kernel> Fb;
@@ -201,9 +204,18 @@ Planar_mesh mesh_planar_domain(const std::vector<std::vector<Boundary_sample> >&
 
   auto refine = [&](CDT& cdt) {
     mark_domain(cdt);
-    CGAL::Delaunay_mesher_2<CDT, Criteria> mesher(cdt, Criteria(sine * sine, size));
-    mesher.init(true);
-    mesher.refine_mesh();
+    if(split_boundary)
+    {
+      CGAL::Delaunay_mesher_2<CDT, Criteria> mesher(cdt, Criteria(sine * sine, size));
+      mesher.init(true);
+      mesher.refine_mesh();
+    }
+    else
+    {
+      CGAL::Delaunay_mesher_no_edge_refinement_2<CDT, Criteria> mesher(cdt, Criteria(sine * sine, size));
+      mesher.init(true);
+      mesher.refine_mesh();
+    }
   };
 
   CDT cdt;
