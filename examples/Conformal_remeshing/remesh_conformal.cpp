@@ -1,13 +1,15 @@
 // remesh_conformal: remeshes a surface by conformal flattening (CGAL::remesh_conformal()).
 //
 //   remesh_conformal IN OUT [--target-edge-length L | --relative-edge-length R] [--min-angle DEG]
-//                    [--report FILE.json] [--plots DIR] [--quiet]
+//                    [--features-angle DEG] [--patches FILE] [--cut-plane a,b,c,d]...
+//                    [--save-patches DIR] [--sequential] [--report FILE.json] [--plots DIR] [--quiet]
 //
 // Progress goes to standard error; OUT is written completely or not at all. Exit codes: 0
 // success, 1 the input cannot be remeshed (defects, unsupported topology, failed flattening),
 // 2 the tool could not run (bad arguments, unreadable input, unwritable output).
 
 #include "atomic_file.h"
+#include "flattening_pictures.h"
 #include "quality_plot_svg.h"
 #include "report_json.h"
 
@@ -20,8 +22,11 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <chrono>
+#include <fstream>
 #include <iostream>
+#include <sstream>
 #include <string>
+#include <vector>
 
 namespace CR = CGAL::Conformal_remeshing;
 namespace tools = Conformal_remeshing_tools;
@@ -32,23 +37,46 @@ namespace {
 
 const char* usage =
   "usage: remesh_conformal IN OUT [--target-edge-length L | --relative-edge-length R] [--min-angle DEG]\n"
-  "                        [--report FILE.json] [--plots DIR] [--quiet]\n"
+  "                        [--features-angle DEG] [--patches FILE] [--cut-plane a,b,c,d]...\n"
+  "                        [--save-patches DIR] [--sequential] [--report FILE.json] [--plots DIR] [--quiet]\n"
   "  IN, OUT                 mesh files (.off .obj .ply .stl); OUT is written atomically\n"
   "  --target-edge-length L  target edge length in the input's units\n"
   "  --relative-edge-length R  target edge length as a fraction of the bounding-box diagonal (default 0.01)\n"
   "  --min-angle DEG         minimum angle of the planar Delaunay refinement (default 28)\n"
-  "  --report FILE.json      stage times, flattening report, quality of input and output, fidelity\n"
+  "  --features-angle DEG    edges with a dihedral angle above DEG are sharp features (default 60; 0: none)\n"
+  "  --patches FILE          user patches: one integer patch id per input face, in face order\n"
+  "  --cut-plane a,b,c,d     cut the surface by the plane ax+by+cz+d=0 first (repeatable)\n"
+  "  --save-patches DIR      DIR/patch_N.off and DIR/patch_N_flattening.svg for every patch\n"
+  "  --sequential            one patch at a time (default: in parallel when built with TBB)\n"
+  "  --report FILE.json      stage times, segmentation and flattening, quality of input and output, fidelity\n"
   "  --plots DIR             DIR/quality.svg: angle and skewness histograms, input and output\n"
   "  --quiet                 no progress messages\n"
-  "Today the input must be a genus-0 patch with at least one boundary loop.\n"
+  "Any orientable, edge-manifold triangle mesh: closed or open, any genus, several components.\n"
   "exit code: 0 success, 1 the input cannot be remeshed, 2 the tool could not run\n";
 
 struct Options
 {
-  std::string input, output, report, plots;
-  double target = 0., relative = 0.01, min_angle = 28.;
-  bool quiet = false;
+  std::string input, output, report, plots, patches, save_patches;
+  double target = 0., relative = 0.01, min_angle = 28., features_angle = 60.;
+  std::vector<K::Plane_3> planes;
+  bool quiet = false, sequential = false;
 };
+
+bool parse_plane(const std::string& text, std::vector<K::Plane_3>& planes)
+{
+  std::istringstream in(text);
+  double c[4];
+  char comma = ',';
+  for(int i = 0; i < 4; ++i)
+    if(!(in >> c[i]) || (i < 3 && (!(in >> comma) || comma != ',')))
+      return false;
+  if(!in.eof() && in.peek() != EOF)
+    return false;
+  if(c[0] == 0. && c[1] == 0. && c[2] == 0.)
+    return false;
+  planes.emplace_back(c[0], c[1], c[2], c[3]);
+  return true;
+}
 
 bool parse(int argc, char** argv, Options& o)
 {
@@ -76,6 +104,16 @@ bool parse(int argc, char** argv, Options& o)
       ok = number(o.relative) && o.relative > 0.;
     else if(arg == "--min-angle")
       ok = number(o.min_angle);
+    else if(arg == "--features-angle")
+      ok = number(o.features_angle);
+    else if(arg == "--patches" && i + 1 < argc)
+      o.patches = argv[++i];
+    else if(arg == "--cut-plane" && i + 1 < argc)
+      ok = parse_plane(argv[++i], o.planes);
+    else if(arg == "--save-patches" && i + 1 < argc)
+      o.save_patches = argv[++i];
+    else if(arg == "--sequential")
+      o.sequential = true;
     else if(arg == "--report" && i + 1 < argc)
       o.report = argv[++i];
     else if(arg == "--plots" && i + 1 < argc)
@@ -137,13 +175,74 @@ int main(int argc, char** argv)
     return 2;
   }
 
+  // User patches: one id per face, all read before anything runs.
+  auto patch_of = input.add_property_map<Mesh::Face_index, std::size_t>("f:user_patch", 0).first;
+  if(!o.patches.empty())
+  {
+    std::ifstream in(o.patches);
+    std::vector<long> ids;
+    long id = 0;
+    while(in >> id)
+      ids.push_back(id);
+    if(!in.eof() || ids.size() != input.number_of_faces()
+       || std::any_of(ids.begin(), ids.end(), [](long i) { return i < 0; }))
+    {
+      std::cerr << "remesh_conformal: cannot read '" << o.patches << "': expected " << input.number_of_faces()
+                << " non-negative integer patch ids (one per face), found " << ids.size()
+                << (in.eof() ? "" : " before a non-integer") << "\n";
+      return 2;
+    }
+    for(Mesh::Face_index f : input.faces())
+      patch_of[f] = std::size_t(ids[f.idx()]);
+  }
+  const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(input);
+  const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin())
+                                    + CGAL::square(box.zmax() - box.zmin()));
+  const double target = o.target > 0. ? o.target : o.relative * diagonal;
+  const auto np = CR::parameters::target_edge_length(
+    target, CR::parameters::minimum_angle(
+              o.min_angle, CR::parameters::features_angle(
+                             o.features_angle, CR::parameters::cut_planes(
+                                                 o.planes, CR::parameters::progress(progress, CGAL::parameters::face_patch_map(patch_of))))));
+
+  if(!o.save_patches.empty())
+  {
+    try
+    {
+      progress("saving the patches to " + o.save_patches);
+      CR::Poly_annulus_segmentation segmentation;
+      CR::segment_into_poly_annuli(input, segmentation, CR::parameters::snap_distance(0.1 * target, np));
+      const auto patches = segmentation.faces_of_patches();
+      for(std::size_t p = 0; p < patches.size(); ++p)
+      {
+        const CR::Extracted_patch patch = CR::extract_patch(segmentation, patches[p]);
+        const std::string name = o.save_patches + "/patch_" + std::to_string(p);
+        tools::write_file_atomically_at(name + ".off", [&](const std::string& temporary) {
+          return CGAL::IO::write_polygon_mesh(temporary, patch.mesh, CGAL::parameters::stream_precision(17));
+        });
+        const CR::Conformal_flattening flat = CR::conformal_flatten(patch.mesh, CR::parameters::maximum_edge_length(2. * target));
+        tools::write_file_atomically(name + "_flattening.svg", tools::welded_domain_svg(flat));
+      }
+    }
+    catch(const CR::Error& e)
+    {
+      std::cerr << "remesh_conformal: " << e.what() << "\n";
+      return 1;
+    }
+    catch(const std::exception& e)
+    {
+      std::cerr << "remesh_conformal: " << e.what() << "\n";
+      return 2;
+    }
+  }
+
   Mesh output;
   CR::Remeshing_report report;
   try
   {
-    progress("flattening and remeshing " + std::to_string(input.number_of_faces()) + " faces");
-    report = o.target > 0. ? CR::remesh_conformal(input, output, CR::parameters::target_edge_length(o.target, CR::parameters::minimum_angle(o.min_angle)))
-                           : CR::remesh_conformal(input, output, CR::parameters::relative_target_edge_length(o.relative, CR::parameters::minimum_angle(o.min_angle)));
+    progress("remeshing " + std::to_string(input.number_of_faces()) + " faces");
+    report = o.sequential ? CR::remesh_conformal<CGAL::Sequential_tag>(input, output, np)
+                          : CR::remesh_conformal<CGAL::Parallel_if_available_tag>(input, output, np);
   }
   catch(const CR::Error& e)
   {
@@ -163,13 +262,18 @@ int main(int argc, char** argv)
     {
       tools::Json_writer json;
       json.begin_object().field("input", o.input).field("output", o.output).field("target_edge_length", report.target_edge_length);
-      json.key("seconds").begin_object().field("checks_and_flattening", report.seconds_checks_and_flattening)
-          .field("ricci_flow", report.flattening.seconds_flow).field("planar_meshing", report.seconds_planar_meshing)
-          .field("pull_back", report.seconds_pull_back).end_object();
-      json.key("flattening").begin_object().field("iterations", report.flattening.iterations)
-          .field("curvature_error", report.flattening.curvature_error).field("flips", report.flattening.flips)
-          .field("min_scale", report.flattening.min_scale).field("max_scale", report.flattening.max_scale)
-          .field("embedding", report.flattening.embedding.summary()).end_object();
+      json.key("seconds").begin_object().field("segmentation", report.seconds_segmentation)
+          .field("flattening", report.seconds_flattening).field("meshing_and_pull_back", report.seconds_meshing_stage)
+          .field("gluing", report.seconds_gluing).field("ricci_flow_thread_seconds", report.seconds_ricci_flow)
+          .field("planar_meshing_thread_seconds", report.seconds_planar_meshing)
+          .field("pull_back_thread_seconds", report.seconds_pull_back).end_object();
+      json.key("segmentation").begin_object().field("patches", report.number_of_patches)
+          .field("plane_cuts", report.plane_cuts).field("patch_bisections", report.patch_bisections)
+          .field("feature_edges", report.feature_edges).field("dangling_feature_edges", report.dangling_feature_edges)
+          .field("boundary_curves", report.boundary_curves).end_object();
+      json.key("flattening").begin_object().field("max_iterations", report.max_newton_iterations)
+          .field("max_curvature_error", report.max_curvature_error).field("flips", report.flips)
+          .field("max_scale_ratio", report.max_scale_ratio).end_object();
       json.field("boundary_samples", report.boundary_samples).field("clamped_vertices", report.clamped_vertices);
       json.key("input_quality");
       tools::write_json(json, before);
@@ -199,7 +303,9 @@ int main(int argc, char** argv)
             << "  Hausdorff distance to / from the input: " << fidelity.relative_distance_to_reference << " / "
             << fidelity.relative_distance_from_reference << " x diagonal; self-intersections: "
             << (fidelity.self_intersects ? "YES" : "none") << "\n"
-            << "  seconds: flattening " << report.seconds_checks_and_flattening << ", planar meshing "
-            << report.seconds_planar_meshing << ", pull-back " << report.seconds_pull_back << "\n";
+            << "  " << report.number_of_patches << " patches (" << report.plane_cuts << " plane cuts, "
+            << report.feature_edges << " feature edges); seconds: segmentation " << report.seconds_segmentation
+            << ", flattening " << report.seconds_flattening << ", meshing and pull-back " << report.seconds_meshing_stage
+            << ", gluing " << report.seconds_gluing << "\n";
   return 0;
 }

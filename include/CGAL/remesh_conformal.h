@@ -9,28 +9,42 @@
 
 #include <CGAL/Conformal_remeshing/Error.h>
 #include <CGAL/Conformal_remeshing/conformal_flatten.h>
-#include <CGAL/Conformal_remeshing/internal/remeshing/planar_locator.h>
 #include <CGAL/Conformal_remeshing/internal/named_parameters.h>
+#include <CGAL/Conformal_remeshing/internal/remeshing/boundary_curves.h>
+#include <CGAL/Conformal_remeshing/internal/remeshing/planar_locator.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/planar_mesher.h>
+#include <CGAL/Conformal_remeshing/segment_into_poly_annuli.h>
 
 #include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/tags.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
 
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <string>
+#include <type_traits>
 #include <vector>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#endif
 
 // Named parameters of `remesh_conformal()` (see its documentation): `target_edge_length(l)`,
 // `relative_target_edge_length(r)` (default 0.01 of the bounding-box diagonal),
-// `minimum_angle(degrees)` (default 28), `corner_angle(degrees)` (default 30) and
-// `smoothing_iterations(n)` (default 3).
+// `minimum_angle(degrees)` (default 28), `corner_angle(degrees)` (default 30),
+// `smoothing_iterations(n)` (default 3), `maximum_scale_ratio(r)` (default 1000) and
+// `progress(callable)`.
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(target_edge_length)
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(relative_target_edge_length)
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(minimum_angle)
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(corner_angle)
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(smoothing_iterations)
+CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(maximum_scale_ratio)
+CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(progress)
 
 namespace CGAL {
 namespace Conformal_remeshing {
@@ -39,15 +53,29 @@ namespace Conformal_remeshing {
 /// What `remesh_conformal()` did.
 struct Remeshing_report
 {
-  Flattening_report flattening;
   double target_edge_length = 0.;
+  std::size_t number_of_patches = 0;
+  std::size_t plane_cuts = 0;       ///< cuts by planes: given, and bisections of the segmentation
+  std::size_t patch_bisections = 0; ///< patches bisected because their flattening failed or stretched
+  std::size_t feature_edges = 0;    ///< sharp edges of the refined input
+  /// feature edges inside a patch rather than on a patch boundary: not kept in the output yet
+  std::size_t dangling_feature_edges = 0;
+  std::vector<Flattening_report> patches; ///< the flattening of each patch
+  int max_newton_iterations = 0;
+  double max_curvature_error = 0.;
+  std::size_t flips = 0;
+  double max_scale_ratio = 0.; ///< the largest ratio of the local scales in a patch
+  std::size_t boundary_curves = 0;
   std::size_t boundary_samples = 0;
   std::size_t output_vertices = 0;
   std::size_t output_faces = 0;
   /// output vertices whose planar position fell outside the flat patch (between a boundary
   /// chord and the boundary polyline) and were clamped onto the nearest patch triangle
   std::size_t clamped_vertices = 0;
-  double seconds_checks_and_flattening = 0., seconds_planar_meshing = 0., seconds_pull_back = 0.;
+  /// wall-clock seconds of the stages (the flattening and meshing stages run patches in parallel)
+  double seconds_segmentation = 0., seconds_flattening = 0., seconds_meshing_stage = 0., seconds_gluing = 0.;
+  /// seconds summed over the patches (thread time)
+  double seconds_ricci_flow = 0., seconds_planar_meshing = 0., seconds_pull_back = 0.;
 };
 
 /// \ingroup PkgConformalRemeshingRef
@@ -59,89 +87,14 @@ struct Surface_location
   std::array<double, 3> coordinates{{0., 0., 0.}};
 };
 
-/// \ingroup PkgConformalRemeshingRef
-/// Remeshes the triangle mesh `input` into `output` by conformal flattening (paper Sec. 4):
-/// `conformal_flatten()` maps the surface onto a planar domain with no overlap, the domain's
-/// boundary loops are resampled on the input boundary at the target edge length, CGAL's
-/// constrained Delaunay refinement meshes the domain with a minimum angle bound and a size bound
-/// in 3D units (the planar size is the target length times the local scale of the map), and every
-/// planar vertex is carried back onto the input surface through the flow's bijective
-/// correspondence (no projection).
-///
-/// For now `input` must be a genus-0 patch with at least one boundary loop; other inputs raise
-/// an `Error` with `Error_code::INVALID_INPUT` until segmentation lands.
-///
-/// \tparam TriangleMesh a model of `MutableFaceGraph` with an internal point property map
-///
-/// \cgalNamedParamsBegin
-///   \cgalParamNBegin{target_edge_length}
-///     \cgalParamDescription{the target edge length in the units of the input (`Conformal_remeshing::parameters::target_edge_length()`)}
-///     \cgalParamDefault{1% of the bounding-box diagonal}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{relative_target_edge_length}
-///     \cgalParamDescription{the target edge length as a fraction of the bounding-box diagonal}
-///     \cgalParamDefault{0.01}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{minimum_angle}
-///     \cgalParamDescription{the minimum angle of the planar refinement in degrees}
-///     \cgalParamDefault{28}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{corner_angle}
-///     \cgalParamDescription{boundary vertices turning by more than this (degrees) are kept}
-///     \cgalParamDefault{30}
-///   \cgalParamNEnd
-///   \cgalParamNBegin{smoothing_iterations}
-///     \cgalParamDescription{passes of Laplacian smoothing in the plane}
-///     \cgalParamDefault{3}
-///   \cgalParamNEnd
-/// \cgalNamedParamsEnd
-/// The parameters of `conformal_flatten()` are passed on to it.
-///
-/// \param input the mesh to remesh
-/// \param output receives the new mesh (cleared first)
-/// \param np the named parameters above
-/// \param locations if not null, receives the input face and barycentric coordinates of every
-///        output vertex, in the order of `vertices(output)`.
-/// \returns what happened, with times per stage
-/// \throws Error on invalid input and when the flattening fails (the message says why).
-template <typename TriangleMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
-Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& output,
-                                  const NamedParameters& np = CGAL::parameters::default_values(),
-                                  std::vector<Surface_location>* locations = nullptr)
+namespace internal {
+namespace remeshing {
+
+// The local scale of the map (planar length over surface length) at the vertices of the flat
+// triangulation, averaged over their triangles: the size field's factor (DESIGN.md 2.8).
+inline std::vector<double> local_scale(const Conformal_flattening& flat)
 {
-  using CGAL::parameters::choose_parameter;
-  using CGAL::parameters::get_parameter;
-  typedef std::chrono::steady_clock Clock;
-  auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
-  Remeshing_report report;
-
-  Clock::time_point start = Clock::now();
-  const CGAL::Bbox_3 box = Polygon_mesh_processing::bbox(input);
-  const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin())
-                                    + CGAL::square(box.zmax() - box.zmin()));
-  const double relative = choose_parameter(get_parameter(np, internal_np::relative_target_edge_length), 0.01);
-  const double h = choose_parameter(get_parameter(np, internal_np::target_edge_length), relative * diagonal);
-  const double min_angle = choose_parameter(get_parameter(np, internal_np::minimum_angle), 28.);
-  if(!(h > 0.) || !std::isfinite(h))
-    throw Error(Error_code::INVALID_INPUT, "remesh_conformal: the target edge length must be positive");
-  if(!(min_angle > 0. && min_angle <= 34.))
-    throw Error(Error_code::INVALID_INPUT, "remesh_conformal: the minimum angle must be in (0, 34] degrees "
-                                           "(Delaunay refinement does not terminate far beyond 30)");
-  report.target_edge_length = h;
-
-  // Input edges longer than twice the target are split first: in a longer triangle the affine
-  // map cannot follow the conformal factor, and pulled-back triangles shear (CAD slivers).
-  const Conformal_flattening flat = conformal_flatten(input, parameters::maximum_edge_length(2. * h, np));
-  report.flattening = flat.report;
-  if(flat.report.status != Error_code::SUCCESS)
-    throw Error(flat.report.status, std::string("remesh_conformal: the flattening failed: ") + error_message(flat.report.status)
-                                      + " (" + flat.report.embedding.summary() + ")");
-  report.seconds_checks_and_flattening = seconds_since(start);
-
-  // --- the size field: the target length times the map's local scale -------------------------
-  start = Clock::now();
-  const internal::remeshing::Planar_locator locator(flat.layout, flat.triangles);
-  std::vector<double> vertex_scale(flat.layout.size(), 0.), vertex_weight(flat.layout.size(), 0.);
+  std::vector<double> scale(flat.layout.size(), 0.), weight(flat.layout.size(), 0.);
   for(std::size_t t = 0; t < flat.triangles.size(); ++t)
   {
     std::array<Epick::Point_3, 3> corner;
@@ -159,90 +112,399 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
     }
     for(int c = 0; c < 3; ++c)
     {
-      vertex_scale[flat.triangles[t][c]] += planar / spatial;
-      vertex_weight[flat.triangles[t][c]] += 1.;
+      scale[flat.triangles[t][c]] += planar / spatial;
+      weight[flat.triangles[t][c]] += 1.;
     }
   }
-  for(std::size_t v = 0; v < vertex_scale.size(); ++v)
-    if(vertex_weight[v] > 0.)
-      vertex_scale[v] /= vertex_weight[v];
+  for(std::size_t v = 0; v < scale.size(); ++v)
+    if(weight[v] > 0.)
+      scale[v] /= weight[v];
+  return scale;
+}
+
+// One patch, remeshed: its boundary samples (indices into the curve samples), its interior
+// points on the surface, and triangles whose corners index the boundary samples first, then
+// the interior points.
+struct Remeshed_patch
+{
+  std::vector<std::size_t> boundary_ids;
+  std::vector<Epick::Point_3> interior_points;
+  std::vector<Poly_annulus_segmentation::Face> interior_faces; // the segmented face of each
+  std::vector<std::array<std::size_t, 3> > triangles;
+  std::size_t clamped_vertices = 0;
+  double seconds_planar_meshing = 0., seconds_pull_back = 0.;
+};
+
+// Planar Delaunay refinement of a flattened patch with the shared boundary samples, then the
+// pull-back of the new points onto the surface through the flow's correspondence.
+inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, const Extracted_patch& patch,
+                                             const Curve_samples& samples, double h, double min_angle,
+                                             int smoothing_iterations)
+{
+  typedef std::chrono::steady_clock Clock;
+  Clock::time_point start = Clock::now();
+  Remeshed_patch result;
+  const Planar_locator locator(flat.layout, flat.triangles);
+  const std::vector<double> scale = local_scale(flat);
   const std::function<double(const Epick::Point_2&)> planar_size = [&](const Epick::Point_2& p) {
-    const internal::remeshing::Planar_locator::Location l = locator.locate(p);
+    const Planar_locator::Location l = locator.locate(p);
     double s = 0.;
     for(int c = 0; c < 3; ++c)
-      s += l.coordinates[c] * vertex_scale[flat.triangles[l.triangle][c]];
+      s += l.coordinates[c] * scale[flat.triangles[l.triangle][c]];
     // The refinement bounds the longest edge of a triangle; 1.4 h leaves edges near h on average.
     return 1.4 * h * s;
   };
-
-  // --- planar meshing --------------------------------------------------------------------------
-  const double corner = choose_parameter(get_parameter(np, internal_np::corner_angle), 30.);
-  std::vector<std::vector<internal::remeshing::Boundary_sample> > loops;
-  loops.push_back(internal::remeshing::resample_loop(flat.outer_boundary, h, corner));
+  std::vector<std::vector<Boundary_sample> > loops;
+  loops.push_back(loop_samples(flat.outer_boundary, patch, samples, result.boundary_ids));
   for(const auto& hole : flat.holes)
-    loops.push_back(internal::remeshing::resample_loop(hole, h, corner));
-  const internal::remeshing::Planar_mesh planar = internal::remeshing::mesh_planar_domain<Epick>(
-    loops, min_angle, planar_size, choose_parameter(get_parameter(np, internal_np::smoothing_iterations), 3));
-  report.boundary_samples = planar.number_of_samples;
-  report.seconds_planar_meshing = seconds_since(start);
+    loops.push_back(loop_samples(hole, patch, samples, result.boundary_ids));
+  const Planar_mesh planar = mesh_planar_domain<Epick>(loops, min_angle, planar_size, smoothing_iterations, false);
+  if(planar.number_of_samples != result.boundary_ids.size())
+    throw Error(Error_code::NOT_AN_EMBEDDING, "remesh_conformal: the boundary samples of a patch overlap in the plane");
+  result.seconds_planar_meshing = std::chrono::duration<double>(Clock::now() - start).count();
 
-  // --- pull-back ------------------------------------------------------------------------------
   start = Clock::now();
-  std::vector<Epick::Point_3> boundary_point;
-  for(const auto& loop : loops)
-    for(const auto& s : loop)
-      boundary_point.push_back(s.point);
-  typedef typename boost::graph_traits<TriangleMesh>::vertex_descriptor vertex_descriptor;
-  auto vpm = get(CGAL::vertex_point, output);
-  typedef typename boost::property_traits<decltype(vpm)>::value_type Output_point;
-  clear(output);
-  std::vector<vertex_descriptor> vertex;
-  vertex.reserve(planar.points.size());
-  if(locations != nullptr)
-    locations->clear();
-  for(std::size_t i = 0; i < planar.points.size(); ++i)
+  for(std::size_t i = planar.number_of_samples; i < planar.points.size(); ++i)
   {
-    const internal::remeshing::Planar_locator::Location l = locator.locate(planar.points[i]);
+    const Planar_locator::Location l = locator.locate(planar.points[i]);
     const Domain_point q = flat.to_surface(l.triangle, l.coordinates);
-    if((std::min)({l.coordinates[0], l.coordinates[1], l.coordinates[2]}) == 0. && i >= planar.number_of_samples)
-      ++report.clamped_vertices;
-    // Boundary samples keep their exact place on the input boundary edges.
-    const Epick::Point_3 p = i < boundary_point.size() ? boundary_point[i] : q.point;
-    vertex.push_back(add_vertex(output));
-    put(vpm, vertex.back(), Output_point(p.x(), p.y(), p.z()));
-    if(locations != nullptr)
-      locations->push_back(Surface_location{q.input_face, q.input_coordinates});
+    if((std::min)({l.coordinates[0], l.coordinates[1], l.coordinates[2]}) == 0.)
+      ++result.clamped_vertices;
+    result.interior_points.push_back(q.point);
+    result.interior_faces.push_back(patch.segmented_face[q.input_face]);
   }
   for(const auto& t : planar.triangles)
   {
-    const std::array<vertex_descriptor, 3> corners{{vertex[t[0]], vertex[t[1]], vertex[t[2]]}};
-    if(CGAL::Euler::add_face(corners, output) == boost::graph_traits<TriangleMesh>::null_face())
-      throw Error(Error_code::INVALID_INPUT, "remesh_conformal: the planar mesh could not be assembled (internal error)");
+    std::array<std::size_t, 3> corners;
+    for(int c = 0; c < 3; ++c)
+      corners[c] = std::size_t(t[c]) < planar.number_of_samples ? result.boundary_ids[t[c]]
+                                                                  : samples.points.size() + (t[c] - planar.number_of_samples);
+    result.triangles.push_back(corners);
+  }
+  result.seconds_pull_back = std::chrono::duration<double>(Clock::now() - start).count();
+  return result;
+}
+
+// Barycentric coordinates of `p` (on the triangle's plane) in the triangle `t`.
+inline std::array<double, 3> barycentric(const Epick::Point_3& p, const std::array<Epick::Point_3, 3>& t)
+{
+  const Epick::Vector_3 u = t[1] - t[0], v = t[2] - t[0], w = p - t[0];
+  const double uu = u * u, uv = u * v, vv = v * v, wu = w * u, wv = w * v;
+  const double d = uu * vv - uv * uv;
+  if(!(d > 0.))
+    return {{1., 0., 0.}};
+  const double b1 = (vv * wu - uv * wv) / d, b2 = (uu * wv - uv * wu) / d;
+  return {{1. - b1 - b2, b1, b2}};
+}
+
+// Runs `task(i)` for i in [0, n), in parallel with TBB when asked for and available.
+template <typename ConcurrencyTag, typename Task>
+void for_each_patch(std::size_t n, const Task& task)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  if(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value)
+  {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1), [&](const tbb::blocked_range<std::size_t>& r) {
+      for(std::size_t i = r.begin(); i != r.end(); ++i)
+        task(i);
+    });
+    return;
+  }
+#endif
+  for(std::size_t i = 0; i < n; ++i)
+    task(i);
+}
+
+} // namespace remeshing
+} // namespace internal
+
+/// \ingroup PkgConformalRemeshingRef
+/// Remeshes the triangle mesh `input` into `output` by conformal flattening (paper Sec. 3-4).
+///
+/// The surface is segmented into poly-annuli (`segment_into_poly_annuli()`: along sharp
+/// features, user patches and cutting planes, then plane bisection until every piece has genus 0
+/// and a boundary). Every patch boundary curve is sampled once, in 3D, on the input polyline at
+/// the target length, keeping junctions and corners; both patches beside a curve use the same
+/// samples. Each patch is flattened by `conformal_flatten()` with no overlap; CGAL's constrained
+/// Delaunay refinement meshes its planar domain with a minimum angle bound and a size bound in
+/// 3D units (the planar size is the target length times the local scale of the map), never
+/// adding points on the shared boundaries; every new planar vertex is carried back onto the input
+/// surface through the flow's bijective correspondence (no projection). The patches are glued at
+/// their shared samples: the output is closed and manifold where the input is, with the input's
+/// components, boundary loops and genus. A patch whose flattening fails, or whose local scale
+/// varies by more than `maximum_scale_ratio`, is bisected and flattened again.
+///
+/// \tparam ConcurrencyTag `CGAL::Parallel_if_available_tag` (the default: patches are flattened and
+///         meshed in parallel when CGAL is linked with TBB), `CGAL::Parallel_tag` or `CGAL::Sequential_tag`
+/// \tparam TriangleMesh a model of `MutableFaceGraph` with an internal point property map
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{target_edge_length}
+///     \cgalParamDescription{the target edge length in the units of the input (`Conformal_remeshing::parameters::target_edge_length()`)}
+///     \cgalParamDefault{1% of the bounding-box diagonal}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{relative_target_edge_length}
+///     \cgalParamDescription{the target edge length as a fraction of the bounding-box diagonal}
+///     \cgalParamDefault{0.01}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{minimum_angle}
+///     \cgalParamDescription{the minimum angle of the planar refinement in degrees}
+///     \cgalParamDefault{28}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{corner_angle}
+///     \cgalParamDescription{boundary and feature vertices turning by more than this (degrees) are kept}
+///     \cgalParamDefault{30}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{smoothing_iterations}
+///     \cgalParamDescription{passes of Laplacian smoothing in the plane}
+///     \cgalParamDefault{3}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{maximum_scale_ratio}
+///     \cgalParamDescription{a patch whose largest local scale exceeds its smallest by more than this is bisected (`Conformal_remeshing::parameters::maximum_scale_ratio()`)}
+///     \cgalParamDefault{1000}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{progress}
+///     \cgalParamDescription{a callable `void(const std::string& stage)` told when each stage starts (`Conformal_remeshing::parameters::progress()`)}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+/// The parameters of `segment_into_poly_annuli()` (features, user patches, cutting planes) and of
+/// `conformal_flatten()` are passed on to them.
+///
+/// \param input the mesh to remesh
+/// \param output receives the new mesh (cleared first)
+/// \param np the named parameters above
+/// \param locations if not null, receives the input face and barycentric coordinates of every
+///        output vertex, in the order of `vertices(output)`.
+/// \returns what happened, with times per stage
+/// \throws Error with `Error_code::INVALID_INPUT` when the input is not a valid, manifold,
+///         orientable triangle mesh or a parameter is out of range, and with the flattening's
+///         code when a patch cannot be flattened even after bisection (the message says why).
+template <typename ConcurrencyTag = CGAL::Parallel_if_available_tag, typename TriangleMesh,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& output,
+                                  const NamedParameters& np = CGAL::parameters::default_values(),
+                                  std::vector<Surface_location>* locations = nullptr)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef std::chrono::steady_clock Clock;
+  typedef Poly_annulus_segmentation::Face Face;
+  auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
+  const auto progress = choose_parameter(get_parameter(np, internal_np::progress), [](const std::string&) {});
+  Remeshing_report report;
+
+  // --- parameters and checks ------------------------------------------------------------------
+  Clock::time_point start = Clock::now();
+  progress("checking the input");
+  const CGAL::Bbox_3 box = Polygon_mesh_processing::bbox(input, np);
+  const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin())
+                                    + CGAL::square(box.zmax() - box.zmin()));
+  const double relative = choose_parameter(get_parameter(np, internal_np::relative_target_edge_length), 0.01);
+  const double h = choose_parameter(get_parameter(np, internal_np::target_edge_length), relative * diagonal);
+  const double min_angle = choose_parameter(get_parameter(np, internal_np::minimum_angle), 28.);
+  const double corner = choose_parameter(get_parameter(np, internal_np::corner_angle), 30.);
+  const int smoothing = choose_parameter(get_parameter(np, internal_np::smoothing_iterations), 3);
+  const double maximum_scale_ratio = choose_parameter(get_parameter(np, internal_np::maximum_scale_ratio), 1000.);
+  if(!(h > 0.) || !std::isfinite(h))
+    throw Error(Error_code::INVALID_INPUT, "remesh_conformal: the target edge length must be positive");
+  if(!(min_angle > 0. && min_angle <= 34.))
+    throw Error(Error_code::INVALID_INPUT, "remesh_conformal: the minimum angle must be in (0, 34] degrees "
+                                           "(Delaunay refinement does not terminate far beyond 30)");
+  if(!(maximum_scale_ratio > 1.))
+    throw Error(Error_code::INVALID_INPUT, "remesh_conformal: the maximum scale ratio must be above 1");
+  report.target_edge_length = h;
+  auto fim = CGAL::get_initialized_face_index_map(input, np);
+  auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(vertex_point, input));
+  std::vector<std::array<Epick::Point_3, 3> > input_triangle(num_faces(input));
+  for(auto f : faces(input))
+  {
+    int c = 0; // corner order of Polygon_mesh_processing::locate(): from the source of halfedge(f)
+    for(auto hf : CGAL::halfedges_around_face(halfedge(f, input), input))
+    {
+      const auto p = get(vpm, source(hf, input));
+      if(c < 3)
+        input_triangle[get(fim, f)][c] = Epick::Point_3(p.x(), p.y(), p.z());
+      ++c;
+    }
+  }
+
+  // Only the flattening's own parameters go on to it: the others name the input's maps.
+  const auto flattening_parameters = parameters::maximum_edge_length(
+    2. * h, parameters::annulus_inner_radius(
+              choose_parameter(get_parameter(np, internal_np::annulus_inner_radius), 0.3),
+              parameters::curvature_tolerance(choose_parameter(get_parameter(np, internal_np::curvature_tolerance), 1e-10),
+                                              CGAL::parameters::number_of_iterations(choose_parameter(
+                                                get_parameter(np, CGAL::internal_np::number_of_iterations), 50)))));
+
+  // --- segmentation ---------------------------------------------------------------------------
+  progress("segmenting into poly-annuli");
+  Poly_annulus_segmentation segmentation;
+  segment_into_poly_annuli(input, segmentation, parameters::snap_distance(0.1 * h, np));
+  report.seconds_segmentation = seconds_since(start);
+
+  // --- flattening, with bisection of the patches that fail or stretch too much ------------------
+  start = Clock::now();
+  std::vector<std::vector<Face> > patch_faces;
+  std::vector<Extracted_patch> patches;
+  std::vector<Conformal_flattening> flattenings;
+  std::vector<std::string> failures;
+  for(int round = 0;; ++round)
+  {
+    patch_faces = segmentation.faces_of_patches();
+    const std::size_t n = patch_faces.size();
+    progress("flattening " + std::to_string(n) + " patches");
+    patches.assign(n, Extracted_patch());
+    flattenings.assign(n, Conformal_flattening());
+    failures.assign(n, std::string());
+    internal::remeshing::for_each_patch<ConcurrencyTag>(n, [&](std::size_t p) {
+      try
+      {
+        patches[p] = extract_patch(segmentation, patch_faces[p]);
+        flattenings[p] = conformal_flatten(patches[p].mesh, flattening_parameters);
+        const Flattening_report& r = flattenings[p].report;
+        if(r.status != Error_code::SUCCESS)
+          failures[p] = std::string(error_message(r.status)) + " (" + r.embedding.summary() + ")";
+        else if(r.max_scale > maximum_scale_ratio * r.min_scale)
+          failures[p] = "scale ratio " + std::to_string(r.max_scale / r.min_scale);
+      }
+      catch(const Error& e)
+      {
+        failures[p] = e.what();
+      }
+    });
+    std::vector<std::size_t> to_bisect;
+    for(std::size_t p = 0; p < n; ++p)
+      if(!failures[p].empty())
+        to_bisect.push_back(p);
+    if(to_bisect.empty())
+      break;
+    if(round == 8)
+      throw Error(flattenings[to_bisect.front()].report.status == Error_code::SUCCESS ? Error_code::NOT_CONVERGED
+                                                                                    : flattenings[to_bisect.front()].report.status,
+                  "remesh_conformal: a patch of " + std::to_string(patch_faces[to_bisect.front()].size())
+                    + " faces cannot be flattened after 8 bisections: " + failures[to_bisect.front()]);
+    for(std::size_t p : to_bisect)
+    {
+      ++report.patch_bisections;
+      if(!bisect_patch(segmentation, segmentation.faces_of_patch(p), 2, 0.1 * h))
+        throw Error(Error_code::NOT_CONVERGED, "remesh_conformal: a patch cannot be flattened (" + failures[p]
+                                                 + ") and no plane bisects it");
+    }
+    segmentation.renumber_patches();
+  }
+  report.number_of_patches = patches.size();
+  report.plane_cuts = segmentation.plane_cuts;
+  report.feature_edges = segmentation.feature_edges;
+  report.dangling_feature_edges = segmentation.dangling_feature_edges;
+  for(const Conformal_flattening& flat : flattenings)
+  {
+    const Flattening_report& r = flat.report;
+    report.max_newton_iterations = (std::max)(report.max_newton_iterations, r.iterations);
+    report.max_curvature_error = (std::max)(report.max_curvature_error, r.curvature_error);
+    report.flips += r.flips;
+    report.max_scale_ratio = (std::max)(report.max_scale_ratio, r.max_scale / r.min_scale);
+    report.seconds_ricci_flow += r.seconds_flow;
+    report.patches.push_back(r);
+  }
+  report.seconds_flattening = seconds_since(start);
+
+  // --- shared boundary samples, then every patch meshed and pulled back -------------------------
+  start = Clock::now();
+  progress("meshing " + std::to_string(patches.size()) + " patches");
+  const internal::remeshing::Curve_samples samples = internal::remeshing::sample_boundary_curves(segmentation, h, corner);
+  report.boundary_samples = samples.points.size();
+  report.boundary_curves = samples.number_of_curves;
+  std::vector<internal::remeshing::Remeshed_patch> remeshed(patches.size());
+  failures.assign(patches.size(), std::string());
+  internal::remeshing::for_each_patch<ConcurrencyTag>(patches.size(), [&](std::size_t p) {
+    try
+    {
+      remeshed[p] = internal::remeshing::remesh_flattened_patch(flattenings[p], patches[p], samples, h, min_angle, smoothing);
+    }
+    catch(const Error& e)
+    {
+      failures[p] = e.what();
+    }
+  });
+  for(std::size_t p = 0; p < patches.size(); ++p)
+    if(!failures[p].empty())
+      throw Error(Error_code::NOT_AN_EMBEDDING, "remesh_conformal: patch " + std::to_string(p) + ": " + failures[p]);
+  report.seconds_meshing_stage = seconds_since(start);
+  for(const auto& r : remeshed)
+  {
+    report.seconds_planar_meshing += r.seconds_planar_meshing;
+    report.seconds_pull_back += r.seconds_pull_back;
+    report.clamped_vertices += r.clamped_vertices;
+  }
+
+  // --- gluing at the shared samples ------------------------------------------------------------
+  start = Clock::now();
+  progress("gluing");
+  std::vector<Epick::Point_3> points(samples.points);
+  std::vector<Face> point_face(samples.face);
+  std::vector<std::array<std::size_t, 3> > triangles;
+  for(const auto& r : remeshed)
+  {
+    const std::size_t offset = points.size() - samples.points.size();
+    points.insert(points.end(), r.interior_points.begin(), r.interior_points.end());
+    point_face.insert(point_face.end(), r.interior_faces.begin(), r.interior_faces.end());
+    for(std::array<std::size_t, 3> t : r.triangles)
+    {
+      for(std::size_t& c : t)
+        if(c >= samples.points.size())
+          c += offset;
+      triangles.push_back(t);
+    }
+  }
+  if(!Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(triangles))
+    throw Error(Error_code::NOT_AN_EMBEDDING, "remesh_conformal: the remeshed patches do not glue into a manifold (internal error)");
+  typedef typename boost::property_traits<decltype(get(CGAL::vertex_point, output))>::value_type Output_point;
+  std::vector<Output_point> output_points;
+  output_points.reserve(points.size());
+  for(const Epick::Point_3& p : points)
+    output_points.push_back(Output_point(p.x(), p.y(), p.z()));
+  clear(output);
+  Polygon_mesh_processing::polygon_soup_to_polygon_mesh(output_points, triangles, output);
+  if(locations != nullptr)
+  {
+    // The soup's points become the mesh's vertices in order; a sample no triangle uses is dropped.
+    locations->clear();
+    std::vector<char> used(points.size(), 0);
+    for(const auto& t : triangles)
+      for(std::size_t c : t)
+        used[c] = 1;
+    for(std::size_t i = 0; i < points.size(); ++i)
+      if(used[i])
+      {
+        const std::size_t f = segmentation.input_face[point_face[i]];
+        locations->push_back(Surface_location{f, internal::remeshing::barycentric(points[i], input_triangle[f])});
+      }
   }
   report.output_vertices = num_vertices(output);
   report.output_faces = num_faces(output);
-  report.seconds_pull_back = seconds_since(start);
+  report.seconds_gluing = seconds_since(start);
   return report;
 }
 
 /// \ingroup PkgConformalRemeshingRef
 /// Remeshes `mesh` in place, like `CGAL::Polygon_mesh_processing::isotropic_remeshing()`; see the
 /// other overload for the parameters.
-template <typename TriangleMesh, typename T, typename Tag, typename Base>
+template <typename ConcurrencyTag = CGAL::Parallel_if_available_tag, typename TriangleMesh, typename T, typename Tag, typename Base>
 Remeshing_report remesh_conformal(TriangleMesh& mesh, const CGAL::Named_function_parameters<T, Tag, Base>& np)
 {
   TriangleMesh output;
-  const Remeshing_report report = remesh_conformal(static_cast<const TriangleMesh&>(mesh), output, np);
+  const Remeshing_report report = remesh_conformal<ConcurrencyTag>(static_cast<const TriangleMesh&>(mesh), output, np);
   mesh = std::move(output);
   return report;
 }
 
 /// \ingroup PkgConformalRemeshingRef
 /// Remeshes `mesh` in place with the default parameters.
-template <typename TriangleMesh>
+template <typename ConcurrencyTag = CGAL::Parallel_if_available_tag, typename TriangleMesh>
 Remeshing_report remesh_conformal(TriangleMesh& mesh)
 {
-  return remesh_conformal(mesh, CGAL::parameters::default_values());
+  return remesh_conformal<ConcurrencyTag>(mesh, CGAL::parameters::default_values());
 }
 
 } // namespace Conformal_remeshing

@@ -541,7 +541,10 @@ public:
     for(int e = number_of_edges() - 1; e >= 0; --e)
       stack.push_back(e);
     std::size_t count = 0;
-    while(!stack.empty())
+    // Flips terminate in exact arithmetic; with rounding, near-cocircular quads could flip back
+    // and forth, so the number of flips is capped far above what converging runs need.
+    const std::size_t cap = 100 * std::size_t(number_of_edges()) + 10000;
+    while(!stack.empty() && count < cap)
     {
       const int e = stack.back();
       stack.pop_back();

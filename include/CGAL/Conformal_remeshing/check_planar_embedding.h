@@ -45,10 +45,12 @@ struct Planar_embedding_report
   std::size_t boundary_intersections = 0;
   /// hole polygons that are not inside the outer polygon, or that lie inside another hole
   std::size_t misplaced_holes = 0;
+  /// points with an infinite or NaN coordinate (then nothing else is checked)
+  std::size_t non_finite_points = 0;
 
   bool is_embedding() const
   {
-    return non_positive_faces == 0 && overlapping_face_pairs == 0 && boundary_intersections == 0 && misplaced_holes == 0;
+    return non_finite_points == 0 && non_positive_faces == 0 && overlapping_face_pairs == 0 && boundary_intersections == 0 && misplaced_holes == 0;
   }
 
   /// "embedding", or the failures in one line
@@ -65,6 +67,7 @@ struct Planar_embedding_report
         separator = ", ";
       }
     };
+    item(non_finite_points, "points with non-finite coordinates");
     item(non_positive_faces, "folded or degenerate triangles");
     item(overlapping_face_pairs, "overlapping triangle pairs");
     item(boundary_intersections, "boundary self-intersections");
@@ -181,6 +184,11 @@ check_planar_embedding(const std::vector<Epick::Point_2>& uv,
 {
   Planar_embedding_report report;
   report.number_of_faces = faces.size();
+  // Exact predicates cannot take NaN or infinity (GMP aborts on them).
+  for(const Epick::Point_2& p : uv)
+    report.non_finite_points += !(std::isfinite(p.x()) && std::isfinite(p.y()));
+  if(report.non_finite_points > 0)
+    return report;
   for(const auto& f : faces)
     if(CGAL::orientation(uv[f[0]], uv[f[1]], uv[f[2]]) != CGAL::POSITIVE)
       ++report.non_positive_faces;

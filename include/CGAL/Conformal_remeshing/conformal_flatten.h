@@ -49,6 +49,10 @@ struct Domain_point
   /// of `CGAL::Polygon_mesh_processing::locate()`)
   std::size_t input_face = 0;
   std::array<double, 3> input_coordinates{{0., 0., 0.}};
+  /// the input vertex (by the vertex index map) this point is the image of, or `none` for a
+  /// point inside an input edge
+  std::size_t input_vertex = none;
+  static constexpr std::size_t none = std::size_t(-1);
 };
 
 /// \ingroup PkgConformalRemeshingRef
@@ -323,15 +327,20 @@ Conformal_flattening conformal_flatten(const TriangleMesh& mesh,
       if(patch.loop_length(patch.boundary_loops[l]) > patch.loop_length(patch.boundary_loops[welded]))
         welded = l;
   }
+  // A planar patch (a CAD face) is flat already: its isometric layout is the flattening, with
+  // no welding, no flow and no split (the map is the identity inside every triangle).
+  const bool planar = internal::welding::is_planar(patch);
   const std::size_t points_before = patch.points.size();
   const double maximum_length = choose_parameter(get_parameter(np, internal_np::maximum_edge_length), 0.);
-  if(maximum_length > 0.)
+  if(maximum_length > 0. && !planar)
     patch.split_long_edges(maximum_length);
   report.edge_splits = patch.points.size() - points_before;
-  patch.split_long_boundary_edges(welded, patch.loop_length(patch.boundary_loops[welded]) / 32.);
+  if(!planar)
+    patch.split_long_boundary_edges(welded, patch.loop_length(patch.boundary_loops[welded]) / 32.);
   report.boundary_splits = patch.points.size() - points_before - report.edge_splits;
 
-  const internal::welding::Welded_disc disc = internal::welding::weld(patch, welded, inner_radius);
+  const internal::welding::Welded_disc disc = planar ? internal::welding::unwelded_disc(patch)
+                                                     : internal::welding::weld(patch, welded, inner_radius);
   result.welded_faces = disc.faces;
   result.faces_of_vertex_start.assign(patch.points.size() + 1, 0);
   for(const auto& f : patch.faces)
@@ -362,13 +371,19 @@ Conformal_flattening conformal_flatten(const TriangleMesh& mesh,
 
   // --- the flow: flat everywhere, convex free boundary ----------------------------------------
   // The welded disc's only boundary is the annulus' inner circle.
-  const std::vector<double> targets = disc_flattening_targets(tri);
   const Clock::time_point flow_start = Clock::now();
-  const Ricci_flow_result<double> flow = discrete_ricci_flow(
-    tri, targets,
-    parameters::curvature_tolerance(
-      choose_parameter(get_parameter(np, internal_np::curvature_tolerance), 1e-10),
-      CGAL::parameters::number_of_iterations(choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 50))));
+  Ricci_flow_result<double> flow;
+  if(planar)
+  {
+    flow.converged = true;
+    flow.conformal_factors.assign(tri.number_of_vertices(), 0.);
+  }
+  else
+    flow = discrete_ricci_flow(
+      tri, disc_flattening_targets(tri),
+      parameters::curvature_tolerance(
+        choose_parameter(get_parameter(np, internal_np::curvature_tolerance), 1e-10),
+        CGAL::parameters::number_of_iterations(choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 50))));
   report.seconds_flow = seconds_since(flow_start);
   report.converged = flow.converged;
   report.iterations = flow.iterations;
@@ -414,8 +429,29 @@ Conformal_flattening conformal_flatten(const TriangleMesh& mesh,
       b[c] = 1.;
       domain_point[v] = result.to_surface(t, b);
       domain_point[v].uv = result.layout[v];
+      if(v < int(patch.number_of_input_vertices))
+        domain_point[v].input_vertex = std::size_t(v);
     }
-  const int outer_marker = patch.boundary_loops[welded].front();
+  // The outer loop: the welded one; for a planar patch, the one enclosing the largest area.
+  int outer_marker = patch.boundary_loops[welded].front();
+  if(planar)
+  {
+    double largest = -std::numeric_limits<double>::infinity();
+    for(const std::vector<int>& loop : loops)
+    {
+      double area = 0.;
+      for(std::size_t i = 0; i < loop.size(); ++i)
+      {
+        const Epick::Point_2 &p = result.layout[loop[i]], &q = result.layout[loop[(i + 1) % loop.size()]];
+        area += p.x() * q.y() - q.x() * p.y();
+      }
+      if(area > largest)
+      {
+        largest = area;
+        outer_marker = loop.front();
+      }
+    }
+  }
   for(const std::vector<int>& loop : loops)
   {
     std::vector<Domain_point> polygon;
@@ -453,6 +489,8 @@ Conformal_flattening conformal_flatten(const TriangleMesh& mesh,
   report.max_scale = std::exp(*range.second);
   for(auto f : faces(mesh))
   {
+    if(report.embedding.non_finite_points > 0)
+      break;
     const halfedge_descriptor h0 = halfedge(f, mesh);
     if(CGAL::orientation(result.uv[get(vim, source(h0, mesh))], result.uv[get(vim, target(h0, mesh))],
                          result.uv[get(vim, target(next(h0, mesh), mesh))]) != CGAL::POSITIVE)

@@ -251,6 +251,61 @@ struct Welded_disc
   double scale = 1.;                           // welded length = 3D length * scale
 };
 
+/// `true` if every point of `patch` lies within `1e-9` of its diagonal from the plane of its
+/// largest face and every face faces the same way (a planar CAD face, or a single triangle).
+inline bool is_planar(const Indexed_patch& patch)
+{
+  auto cross = [](const Vec3& a, const Vec3& b) { return Vec3{{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}}; };
+  auto minus = [](const Vec3& a, const Vec3& b) { return Vec3{{a[0] - b[0], a[1] - b[1], a[2] - b[2]}}; };
+  auto dot = [](const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
+  Vec3 normal{{0., 0., 0.}}, low = patch.points.front(), high = patch.points.front();
+  double largest = -1.;
+  for(const auto& f : patch.faces)
+  {
+    const Vec3 n = cross(minus(patch.points[f[1]], patch.points[f[0]]), minus(patch.points[f[2]], patch.points[f[0]]));
+    if(dot(n, n) > largest)
+    {
+      largest = dot(n, n);
+      normal = n;
+    }
+  }
+  for(const Vec3& p : patch.points)
+    for(int k = 0; k < 3; ++k)
+    {
+      low[k] = (std::min)(low[k], p[k]);
+      high[k] = (std::max)(high[k], p[k]);
+    }
+  const double diagonal = std::sqrt(dot(minus(high, low), minus(high, low)));
+  if(!(largest > 0.))
+    return false;
+  const double unit = std::sqrt(largest);
+  const Vec3& origin = patch.points[patch.faces.front()[0]];
+  for(const Vec3& p : patch.points)
+    if(std::abs(dot(minus(p, origin), normal)) / unit > 1e-9 * diagonal)
+      return false;
+  for(const auto& f : patch.faces)
+    if(dot(cross(minus(patch.points[f[1]], patch.points[f[0]]), minus(patch.points[f[2]], patch.points[f[0]])), normal) <= 0.)
+      return false;
+  return true;
+}
+
+/// The patch itself as the "welded disc" of a planar patch: no annulus, no fill, no seam.
+inline Welded_disc unwelded_disc(const Indexed_patch& patch)
+{
+  Welded_disc disc;
+  disc.number_of_vertices = patch.points.size();
+  disc.faces = patch.faces;
+  disc.patch_faces = patch.faces.size();
+  for(const auto& f : patch.faces)
+  {
+    std::array<double, 3> l;
+    for(int c = 0; c < 3; ++c)
+      l[c] = distance(patch.points[f[c]], patch.points[f[(c + 1) % 3]]);
+    disc.lengths.push_back(l);
+  }
+  return disc;
+}
+
 /// Welds `patch` along its loop `welded` to a planar annulus of inner radius `inner_radius` and
 /// fills its other loops with cone vertices. The loop is scaled to the unit circle: the annulus'
 /// outer circle is the polygon inscribed in it whose sides are exactly the loop's edge lengths,

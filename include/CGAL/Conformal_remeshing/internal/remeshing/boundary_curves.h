@@ -1,0 +1,209 @@
+// Copyright (c) 2026 CGAL Conformal Remeshing contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Patch boundaries sampled once, in 3D, on the input polylines (DESIGN.md 2.10): both patches
+// beside a curve use the same samples, so the remeshed patches glue into one watertight mesh.
+
+#ifndef CGAL_CONFORMAL_REMESHING_INTERNAL_REMESHING_BOUNDARY_CURVES_H
+#define CGAL_CONFORMAL_REMESHING_INTERNAL_REMESHING_BOUNDARY_CURVES_H
+
+#include <CGAL/Conformal_remeshing/conformal_flatten.h>
+#include <CGAL/Conformal_remeshing/internal/remeshing/planar_mesher.h>
+#include <CGAL/Conformal_remeshing/segment_into_poly_annuli.h>
+
+#include <cmath>
+#include <map>
+#include <vector>
+
+namespace CGAL {
+namespace Conformal_remeshing {
+namespace internal {
+namespace remeshing {
+
+/// The samples of every patch boundary curve of a segmentation. A sample is either at a vertex
+/// of the segmented mesh (curve ends: junctions of three or more patches, corners) or inside
+/// one of its edges.
+struct Curve_samples
+{
+  typedef Poly_annulus_segmentation::Vertex Vertex;
+  std::vector<Epick::Point_3> points;
+  std::vector<Poly_annulus_segmentation::Face> face; ///< a face of the segmented mesh holding each sample
+  std::map<Vertex, std::size_t> at_vertex;
+  /// samples inside the edge (`first`, `second`) with `first < second`: the fraction of the way
+  /// from `first`, increasing
+  std::map<std::pair<Vertex, Vertex>, std::vector<std::pair<double, std::size_t> > > on_edge;
+  std::size_t number_of_curves = 0;
+};
+
+/// Splits the patch boundaries of `s` (edges between two patches, and borders) into curves
+/// between junctions (vertices where other than two boundary edges meet, where the pair of
+/// patches changes, or where the curve turns by more than `corner_degrees`), and samples each
+/// curve at spacing close to `spacing`. A curve that closes on itself gets at least 3 pieces,
+/// and two curves with the same ends at least 2 each, so every patch loop has 3 samples or more.
+inline Curve_samples sample_boundary_curves(const Poly_annulus_segmentation& s, double spacing, double corner_degrees)
+{
+  typedef Poly_annulus_segmentation::Mesh Mesh;
+  typedef Mesh::Halfedge_index Halfedge;
+  typedef Curve_samples::Vertex Vertex;
+  const Mesh& m = s.mesh;
+  const std::size_t border = std::size_t(-1);
+  auto patch_of = [&](Halfedge h) { return m.is_border(h) ? border : s.patch[m.face(h)]; };
+  auto sides = [&](Halfedge h) { return std::minmax(patch_of(h), patch_of(m.opposite(h))); };
+
+  std::vector<std::vector<Halfedge> > outgoing(m.number_of_vertices());
+  for(auto e : m.edges())
+    if(s.is_patch_boundary(e))
+      for(Halfedge h : {m.halfedge(e), m.opposite(m.halfedge(e))})
+        outgoing[m.source(h)].push_back(h);
+  std::vector<char> junction(m.number_of_vertices(), 0);
+  for(Vertex v : m.vertices())
+  {
+    const std::vector<Halfedge>& out = outgoing[v];
+    if(out.empty())
+      continue;
+    if(out.size() != 2 || sides(out[0]) != sides(out[1]))
+    {
+      junction[v] = 1;
+      continue;
+    }
+    const Epick::Vector_3 in = m.point(v) - m.point(m.target(out[0])), next = m.point(m.target(out[1])) - m.point(v);
+    const double c = (in * next) / std::sqrt(in.squared_length() * next.squared_length());
+    junction[v] = std::acos((std::max)(-1., (std::min)(1., c))) * 180. / CGAL_PI > corner_degrees;
+  }
+
+  // Curves as vertex polylines: first from every junction, then the closed curves left.
+  std::vector<std::vector<Vertex> > curves;
+  std::vector<char> done(m.number_of_edges(), 0);
+  auto trace = [&](Halfedge h) {
+    std::vector<Vertex> curve{m.source(h)};
+    for(;;)
+    {
+      done[m.edge(h)] = 1;
+      const Vertex v = m.target(h);
+      curve.push_back(v);
+      if(junction[v] || v == curve.front())
+        break;
+      const std::vector<Halfedge>& out = outgoing[v];
+      h = (m.edge(out[0]) == m.edge(h)) ? out[1] : out[0];
+    }
+    curves.push_back(curve);
+  };
+  for(Vertex v : m.vertices())
+    if(junction[v])
+      for(Halfedge h : outgoing[v])
+        if(!done[m.edge(h)])
+          trace(h);
+  for(Vertex v : m.vertices())
+    for(Halfedge h : outgoing[v])
+      if(!done[m.edge(h)])
+        trace(h);
+
+  std::map<std::pair<Vertex, Vertex>, int> curves_between;
+  for(const auto& curve : curves)
+    ++curves_between[std::minmax(curve.front(), curve.back())];
+
+  Curve_samples samples;
+  samples.number_of_curves = curves.size();
+  auto any_face = [&](Halfedge h) { return m.is_border(h) ? m.face(m.opposite(h)) : m.face(h); };
+  auto vertex_sample = [&](Vertex v) {
+    auto found = samples.at_vertex.find(v);
+    if(found != samples.at_vertex.end())
+      return;
+    samples.at_vertex[v] = samples.points.size();
+    samples.points.push_back(m.point(v));
+    samples.face.push_back(any_face(outgoing[v].front()));
+  };
+  for(const auto& curve : curves)
+  {
+    std::vector<double> length(curve.size() - 1);
+    double total = 0.;
+    for(std::size_t i = 0; i + 1 < curve.size(); ++i)
+      total += length[i] = std::sqrt(CGAL::squared_distance(m.point(curve[i]), m.point(curve[i + 1])));
+    const std::size_t fewest = curve.front() == curve.back() ? 3 : curves_between[std::minmax(curve.front(), curve.back())] > 1 ? 2 : 1;
+    const std::size_t pieces = (std::max<std::size_t>)(fewest, std::size_t(std::round(total / spacing)));
+    const double step = total / double(pieces);
+    vertex_sample(curve.front());
+    vertex_sample(curve.back());
+    std::size_t e = 0;
+    double before = 0.; // curve length before edge e
+    for(std::size_t k = 1; k < pieces; ++k)
+    {
+      const double at = step * double(k);
+      while(before + length[e] < at && e + 2 < curve.size())
+        before += length[e++];
+      const double t = (std::min)(1., (std::max)(0., (at - before) / length[e]));
+      const Epick::Point_3 &a = m.point(curve[e]), &b = m.point(curve[e + 1]);
+      const Halfedge h = m.halfedge(curve[e], curve[e + 1]);
+      const bool forward = curve[e] < curve[e + 1];
+      samples.on_edge[std::minmax(curve[e], curve[e + 1])].emplace_back(forward ? t : 1. - t, samples.points.size());
+      samples.points.push_back(Epick::Point_3(a.x() + t * (b.x() - a.x()), a.y() + t * (b.y() - a.y()), a.z() + t * (b.z() - a.z())));
+      samples.face.push_back(any_face(h));
+    }
+  }
+  for(auto& edge : samples.on_edge)
+    std::sort(edge.second.begin(), edge.second.end());
+  return samples;
+}
+
+/// The samples of one boundary loop of a flattened patch, in loop order, with their planar
+/// positions: a sample inside an input edge is placed on the planar image of that edge (a
+/// polyline when the flattening split it) at the same fraction of its length. `ids` receives
+/// the index of each sample in `samples`.
+inline std::vector<Boundary_sample> loop_samples(const std::vector<Domain_point>& loop, const Extracted_patch& patch,
+                                                 const Curve_samples& samples, std::vector<std::size_t>& ids)
+{
+  typedef Curve_samples::Vertex Vertex;
+  std::vector<std::size_t> corners; // loop positions of input vertices
+  for(std::size_t i = 0; i < loop.size(); ++i)
+    if(loop[i].input_vertex != Domain_point::none)
+      corners.push_back(i);
+  std::vector<Boundary_sample> result;
+  const std::size_t n = loop.size();
+  for(std::size_t k = 0; k < corners.size(); ++k)
+  {
+    const std::size_t first = corners[k], last = corners[(k + 1) % corners.size()];
+    const Vertex a = patch.segmented_vertex[loop[first].input_vertex], b = patch.segmented_vertex[loop[last].input_vertex];
+    const auto at_a = samples.at_vertex.find(a);
+    if(at_a != samples.at_vertex.end())
+    {
+      result.push_back(Boundary_sample{loop[first].uv, samples.points[at_a->second]});
+      ids.push_back(at_a->second);
+    }
+    const auto inside = samples.on_edge.find(std::minmax(a, b));
+    if(inside == samples.on_edge.end())
+      continue;
+    // The planar polyline of the edge, by 3D length (split points lie on the edge).
+    std::vector<std::size_t> path{first};
+    for(std::size_t i = (first + 1) % n; path.back() != last; i = (i + 1) % n)
+      path.push_back(i);
+    std::vector<double> along{0.};
+    for(std::size_t i = 0; i + 1 < path.size(); ++i)
+      along.push_back(along.back() + std::sqrt(CGAL::squared_distance(loop[path[i]].point, loop[path[i + 1]].point)));
+    std::vector<std::pair<double, std::size_t> > edge_samples = inside->second;
+    if(b < a)
+      for(auto& sample : edge_samples)
+        sample.first = 1. - sample.first;
+    std::sort(edge_samples.begin(), edge_samples.end());
+    std::size_t piece = 0;
+    for(const auto& sample : edge_samples)
+    {
+      const double at = sample.first * along.back();
+      while(piece + 2 < path.size() && along[piece + 1] < at)
+        ++piece;
+      const double span = along[piece + 1] - along[piece];
+      const double t = span > 0. ? (std::min)(1., (std::max)(0., (at - along[piece]) / span)) : 0.;
+      const Epick::Point_2 &p = loop[path[piece]].uv, &q = loop[path[piece + 1]].uv;
+      result.push_back(Boundary_sample{Epick::Point_2(p.x() + t * (q.x() - p.x()), p.y() + t * (q.y() - p.y())),
+                                       samples.points[sample.second]});
+      ids.push_back(sample.second);
+    }
+  }
+  return result;
+}
+
+} // namespace remeshing
+} // namespace internal
+} // namespace Conformal_remeshing
+} // namespace CGAL
+
+#endif // CGAL_CONFORMAL_REMESHING_INTERNAL_REMESHING_BOUNDARY_CURVES_H

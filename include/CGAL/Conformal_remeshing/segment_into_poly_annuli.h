@@ -1,0 +1,605 @@
+// Copyright (c) 2026 CGAL Conformal Remeshing contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Segmentation of any orientable manifold triangle mesh into poly-annuli (connected, genus 0,
+// at least one boundary loop): along sharp features, user patches and planes, then plane
+// bisection of every piece that still has a handle or no boundary (paper Sec. 3, DESIGN.md 2.9).
+
+#ifndef CGAL_CONFORMAL_REMESHING_SEGMENT_INTO_POLY_ANNULI_H
+#define CGAL_CONFORMAL_REMESHING_SEGMENT_INTO_POLY_ANNULI_H
+
+#include <CGAL/Conformal_remeshing/Error.h>
+#include <CGAL/Conformal_remeshing/check_mesh.h>
+#include <CGAL/Conformal_remeshing/internal/named_parameters.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/Polygon_mesh_processing/detect_features.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/Euler_operations.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <Eigen/Eigenvalues>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <numeric>
+#include <string>
+#include <vector>
+
+// Named parameters of `segment_into_poly_annuli()` (see its documentation):
+// - `features_angle(degrees)`: edges whose dihedral angle deviates from flat by more than this
+//   are sharp features (default 60; 0 or less: none);
+// - `cut_planes(planes)`: a `std::vector<CGAL::Epick::Plane_3>` cutting the surface first;
+// - `snap_distance(d)`: vertices closer than `d` to a cutting plane are taken as on it.
+CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(features_angle)
+CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(cut_planes)
+CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(snap_distance)
+
+namespace CGAL {
+namespace Conformal_remeshing {
+
+/// \ingroup PkgConformalRemeshingRef
+/// A surface cut into poly-annuli. `mesh` is the input refined along the cutting planes (new
+/// vertices lie on input edges, new edges inside input faces, so the surface is the same); each
+/// face knows its patch and the input face it lies in, each edge whether it is a sharp feature.
+struct Poly_annulus_segmentation
+{
+  typedef CGAL::Surface_mesh<Epick::Point_3> Mesh;
+  typedef Mesh::Vertex_index Vertex;
+  typedef Mesh::Face_index Face;
+  typedef Mesh::Edge_index Edge;
+
+  Mesh mesh;
+  Mesh::Property_map<Face, std::size_t> patch;
+  Mesh::Property_map<Face, std::size_t> input_face;
+  Mesh::Property_map<Edge, bool> is_feature;
+  std::size_t number_of_patches = 0;
+  std::size_t feature_edges = 0;
+  /// feature edges inside a patch (the same patch on both sides): not kept in the output yet
+  std::size_t dangling_feature_edges = 0;
+  std::size_t plane_cuts = 0;
+
+  Poly_annulus_segmentation() { reset(); }
+
+  /// Empties the mesh and its properties.
+  void reset()
+  {
+    mesh.clear();
+    patch = mesh.add_property_map<Face, std::size_t>("f:patch", 0).first;
+    input_face = mesh.add_property_map<Face, std::size_t>("f:input_face", 0).first;
+    is_feature = mesh.add_property_map<Edge, bool>("e:feature", false).first;
+    number_of_patches = feature_edges = dangling_feature_edges = plane_cuts = 0;
+  }
+  Poly_annulus_segmentation(const Poly_annulus_segmentation&) = delete;
+  Poly_annulus_segmentation& operator=(const Poly_annulus_segmentation&) = delete;
+
+  /// `true` if `e` separates two patches or lies on the border of the mesh.
+  bool is_patch_boundary(Edge e) const
+  {
+    const auto h = mesh.halfedge(e);
+    return mesh.is_border(e) || patch[mesh.face(h)] != patch[mesh.face(mesh.opposite(h))];
+  }
+
+  /// Renumbers the patches `0 .. number_of_patches - 1` by connected components: two faces are
+  /// in the same patch when they share an edge that is not a feature and had the same label.
+  void renumber_patches()
+  {
+    const std::size_t unset = std::size_t(-1);
+    std::vector<std::size_t> label(mesh.number_of_faces(), unset);
+    std::size_t count = 0;
+    std::vector<Face> stack;
+    for(Face seed : mesh.faces())
+    {
+      if(label[seed] != unset)
+        continue;
+      label[seed] = count;
+      stack.push_back(seed);
+      while(!stack.empty())
+      {
+        const Face f = stack.back();
+        stack.pop_back();
+        for(auto h : CGAL::halfedges_around_face(mesh.halfedge(f), mesh))
+        {
+          const Face g = mesh.face(mesh.opposite(h));
+          if(g == Mesh::null_face() || label[g] != unset || is_feature[mesh.edge(h)] || patch[g] != patch[f])
+            continue;
+          label[g] = count;
+          stack.push_back(g);
+        }
+      }
+      ++count;
+    }
+    for(Face f : mesh.faces())
+      patch[f] = label[f];
+    number_of_patches = count;
+  }
+
+  /// The faces of patch `p`.
+  std::vector<Face> faces_of_patch(std::size_t p) const
+  {
+    std::vector<Face> result;
+    for(Face f : mesh.faces())
+      if(patch[f] == p)
+        result.push_back(f);
+    return result;
+  }
+
+  /// The faces of every patch.
+  std::vector<std::vector<Face> > faces_of_patches() const
+  {
+    std::vector<std::vector<Face> > result(number_of_patches);
+    for(Face f : mesh.faces())
+      result[patch[f]].push_back(f);
+    return result;
+  }
+};
+
+/// \ingroup PkgConformalRemeshingRef
+/// One patch as a mesh of its own. Vertices where the patch touches itself (a pinched vertex)
+/// are duplicated, so `mesh` is always a manifold.
+struct Extracted_patch
+{
+  typedef CGAL::Surface_mesh<Epick::Point_3> Mesh;
+  Mesh mesh;
+  std::vector<Poly_annulus_segmentation::Vertex> segmented_vertex; ///< by vertex index of `mesh`
+  std::vector<Poly_annulus_segmentation::Face> segmented_face;     ///< by face index of `mesh`
+  std::size_t boundary_loops = 0;
+  long genus = 0;
+
+  bool is_poly_annulus() const { return genus == 0 && boundary_loops > 0; }
+};
+
+namespace internal {
+namespace segmentation {
+
+typedef Poly_annulus_segmentation Segmentation;
+typedef Segmentation::Mesh Mesh;
+
+// Union-find over face corners.
+inline std::size_t find_root(std::vector<std::size_t>& parent, std::size_t i)
+{
+  while(parent[i] != i)
+    i = parent[i] = parent[parent[i]];
+  return i;
+}
+
+} // namespace segmentation
+} // namespace internal
+
+/// \ingroup PkgConformalRemeshingRef
+/// Copies the faces `faces` of one patch of `s` into a mesh of their own, with its topology.
+inline Extracted_patch extract_patch(const Poly_annulus_segmentation& s, const std::vector<Poly_annulus_segmentation::Face>& faces)
+{
+  typedef Poly_annulus_segmentation::Face Face;
+  const Poly_annulus_segmentation::Mesh& m = s.mesh;
+  std::map<Face, std::size_t> local_face;
+  for(std::size_t i = 0; i < faces.size(); ++i)
+    local_face[faces[i]] = i;
+  // Corners 3i+c of local face i; corners of the same vertex in faces joined through an edge of
+  // the patch are the same patch vertex (a fan), so a pinched vertex gives one vertex per fan.
+  std::vector<std::size_t> parent(3 * faces.size());
+  std::iota(parent.begin(), parent.end(), std::size_t(0));
+  auto corner = [&](Face f, Poly_annulus_segmentation::Vertex v) {
+    std::size_t c = 0;
+    for(auto h : CGAL::halfedges_around_face(m.halfedge(f), m))
+    {
+      if(m.target(h) == v)
+        return 3 * local_face.at(f) + c;
+      ++c;
+    }
+    return std::size_t(-1);
+  };
+  for(std::size_t i = 0; i < faces.size(); ++i)
+    for(auto h : CGAL::halfedges_around_face(m.halfedge(faces[i]), m))
+    {
+      const Face g = m.face(m.opposite(h));
+      if(g == Poly_annulus_segmentation::Mesh::null_face() || s.patch[g] != s.patch[faces[i]] || !(faces[i] < g))
+        continue;
+      for(auto v : {m.source(h), m.target(h)})
+        parent[internal::segmentation::find_root(parent, corner(faces[i], v))] =
+          internal::segmentation::find_root(parent, corner(g, v));
+    }
+
+  Extracted_patch patch;
+  std::map<std::size_t, Extracted_patch::Mesh::Vertex_index> vertex_of_root;
+  for(std::size_t i = 0; i < faces.size(); ++i)
+  {
+    std::array<Extracted_patch::Mesh::Vertex_index, 3> corners;
+    std::size_t c = 0;
+    for(auto h : CGAL::halfedges_around_face(m.halfedge(faces[i]), m))
+    {
+      const std::size_t root = internal::segmentation::find_root(parent, 3 * i + c);
+      auto found = vertex_of_root.find(root);
+      if(found == vertex_of_root.end())
+      {
+        found = vertex_of_root.emplace(root, patch.mesh.add_vertex(m.point(m.target(h)))).first;
+        patch.segmented_vertex.push_back(m.target(h));
+      }
+      corners[c++] = found->second;
+    }
+    if(patch.mesh.add_face(corners[0], corners[1], corners[2]) == Extracted_patch::Mesh::null_face())
+      throw Error(Error_code::INVALID_INPUT, "extract_patch: the patch is not a manifold surface (internal error)");
+    patch.segmented_face.push_back(faces[i]);
+  }
+  std::vector<bool> seen(patch.mesh.number_of_halfedges(), false);
+  for(auto h : patch.mesh.halfedges())
+    if(patch.mesh.is_border(h) && !seen[h])
+    {
+      ++patch.boundary_loops;
+      for(auto g : CGAL::halfedges_around_face(h, patch.mesh))
+        seen[g] = true;
+    }
+  const long euler = long(patch.mesh.number_of_vertices()) - long(patch.mesh.number_of_edges()) + long(patch.mesh.number_of_faces());
+  patch.genus = (2 - euler - long(patch.boundary_loops)) / 2;
+  return patch;
+}
+
+namespace internal {
+namespace segmentation {
+
+// Splits every face of polygon `f` (more than 3 sides) into a fan around the target of `h`.
+inline void fan_triangulate(Segmentation& s, Mesh::Halfedge_index h)
+{
+  Mesh& m = s.mesh;
+  const Segmentation::Face f = m.face(h);
+  while(m.degree(m.face(h)) > 3)
+  {
+    const Mesh::Halfedge_index far = m.next(m.next(h));
+    const Mesh::Halfedge_index diagonal = CGAL::Euler::split_face(h, far, m);
+    for(Segmentation::Face g : {m.face(diagonal), m.face(m.opposite(diagonal))})
+    {
+      s.patch[g] = s.patch[f];
+      s.input_face[g] = s.input_face[f];
+    }
+    // Keep `h` in the part that still has more than 3 sides.
+    if(m.degree(m.face(h)) == 3 && m.degree(m.face(m.opposite(diagonal))) > 3)
+      h = m.prev(m.opposite(diagonal));
+  }
+}
+
+// Cuts the faces `faces` (one patch) by `plane`: edges crossing it are split at the crossing,
+// faces on both sides are split along the cut, and the faces on the negative side get the new
+// label `negative_label`. Vertices within `snap` of the plane count as on it, so the cut does
+// not make needlessly tiny triangles. Returns false if the plane leaves every face on one side.
+inline bool cut_by_plane(Segmentation& s, const std::vector<Segmentation::Face>& faces, const Epick::Plane_3& plane,
+                         double snap, std::size_t negative_label)
+{
+  Mesh& m = s.mesh;
+  const double norm = std::sqrt(CGAL::to_double(plane.orthogonal_vector().squared_length()));
+  auto distance = [&](Segmentation::Vertex v) {
+    const Epick::Point_3& p = m.point(v);
+    return (plane.a() * p.x() + plane.b() * p.y() + plane.c() * p.z() + plane.d()) / norm;
+  };
+  std::map<Segmentation::Vertex, int> side;
+  bool positive = false, negative = false;
+  for(Segmentation::Face f : faces)
+    for(auto v : CGAL::vertices_around_face(m.halfedge(f), m))
+      if(!side.count(v))
+      {
+        const double d = distance(v);
+        side[v] = std::abs(d) <= snap ? 0 : (d > 0. ? 1 : -1);
+        positive = positive || side[v] > 0;
+        negative = negative || side[v] < 0;
+      }
+  if(!positive || !negative)
+    return false;
+
+  // 1. Split the crossing edges at the crossing point (on the input edge, so on the surface).
+  std::vector<Segmentation::Edge> crossing;
+  for(Segmentation::Face f : faces)
+    for(auto h : CGAL::halfedges_around_face(m.halfedge(f), m))
+      if(side[m.source(h)] * side[m.target(h)] < 0)
+        crossing.push_back(m.edge(h));
+  std::sort(crossing.begin(), crossing.end());
+  crossing.erase(std::unique(crossing.begin(), crossing.end()), crossing.end());
+  std::vector<Segmentation::Face> touched;
+  std::vector<Segmentation::Vertex> on_cut;
+  for(Segmentation::Edge e : crossing)
+  {
+    const Mesh::Halfedge_index h = m.halfedge(e);
+    const Epick::Point_3 a = m.point(m.source(h)), b = m.point(m.target(h));
+    const double da = distance(m.source(h)), db = distance(m.target(h));
+    const double t = da / (da - db);
+    const bool feature = s.is_feature[e];
+    const Mesh::Halfedge_index to_new = CGAL::Euler::split_edge(h, m);
+    const Segmentation::Vertex v = m.target(to_new);
+    m.point(v) = Epick::Point_3(a.x() + t * (b.x() - a.x()), a.y() + t * (b.y() - a.y()), a.z() + t * (b.z() - a.z()));
+    side[v] = 0;
+    on_cut.push_back(v);
+    s.is_feature[m.edge(to_new)] = feature;
+    s.is_feature[e] = feature;
+    for(auto g : {to_new, m.opposite(to_new)})
+      if(!m.is_border(g))
+        touched.push_back(m.face(g));
+  }
+
+  // 2. Faces of the patch with vertices on both sides are split between their two cut
+  //    vertices; every face left with more than 3 sides is split into a fan.
+  std::vector<Segmentation::Face> patch_faces(faces);
+  for(Segmentation::Face f : touched)
+    patch_faces.push_back(f);
+  std::sort(patch_faces.begin(), patch_faces.end());
+  patch_faces.erase(std::unique(patch_faces.begin(), patch_faces.end()), patch_faces.end());
+  const std::size_t label = s.patch[faces.front()];
+  for(Segmentation::Face f : patch_faces)
+  {
+    if(m.degree(f) == 3)
+      continue;
+    std::vector<Mesh::Halfedge_index> to_cut; // halfedges of f whose target is on the plane
+    bool has_positive = false, has_negative = false;
+    for(auto h : CGAL::halfedges_around_face(m.halfedge(f), m))
+    {
+      has_positive = has_positive || (side.count(m.target(h)) && side[m.target(h)] > 0);
+      has_negative = has_negative || (side.count(m.target(h)) && side[m.target(h)] < 0);
+      if(side.count(m.target(h)) && side[m.target(h)] == 0)
+        to_cut.push_back(h);
+    }
+    Mesh::Halfedge_index apex = to_cut.empty() ? m.halfedge(f) : to_cut.front();
+    if(s.patch[f] == label && has_positive && has_negative)
+    {
+      // The two cut vertices that are not neighbours along the face separate the sides.
+      for(std::size_t i = 0; i < to_cut.size(); ++i)
+        for(std::size_t j = i + 1; j < to_cut.size(); ++j)
+          if(m.next(to_cut[i]) != to_cut[j] && m.next(to_cut[j]) != to_cut[i])
+          {
+            const Mesh::Halfedge_index diagonal = CGAL::Euler::split_face(to_cut[i], to_cut[j], m);
+            for(Segmentation::Face g : {m.face(diagonal), m.face(m.opposite(diagonal))})
+            {
+              s.patch[g] = s.patch[f];
+              s.input_face[g] = s.input_face[f];
+            }
+            fan_triangulate(s, diagonal);
+            fan_triangulate(s, m.opposite(diagonal));
+            i = j = to_cut.size();
+          }
+      continue;
+    }
+    fan_triangulate(s, apex);
+  }
+
+  // 3. The faces of the patch on the negative side get their own label.
+  std::vector<Segmentation::Face> stack;
+  for(Segmentation::Vertex v : on_cut)
+    for(Segmentation::Face f : CGAL::faces_around_target(m.halfedge(v), m))
+      if(f != Mesh::null_face())
+        stack.push_back(f);
+  for(Segmentation::Face f : faces)
+    stack.push_back(f);
+  for(Segmentation::Face f : stack)
+  {
+    if(s.patch[f] != label)
+      continue;
+    int sum = 0;
+    for(auto v : CGAL::vertices_around_face(m.halfedge(f), m))
+      sum += side.count(v) ? side[v] : 0;
+    if(sum < 0)
+      s.patch[f] = negative_label;
+  }
+  ++s.plane_cuts;
+  return true;
+}
+
+// The principal axes of a patch (area-weighted face centroids): the centroid and the axes from
+// the smallest variance to the largest.
+inline std::pair<Epick::Point_3, std::array<Epick::Vector_3, 3> > principal_axes(const Segmentation& s,
+                                                                                const std::vector<Segmentation::Face>& faces)
+{
+  double area = 0.;
+  Eigen::Vector3d centre = Eigen::Vector3d::Zero();
+  std::vector<std::pair<double, Eigen::Vector3d> > samples;
+  for(Segmentation::Face f : faces)
+  {
+    const auto h = s.mesh.halfedge(f);
+    const Epick::Point_3 &a = s.mesh.point(s.mesh.source(h)), &b = s.mesh.point(s.mesh.target(h)),
+                         &c = s.mesh.point(s.mesh.target(s.mesh.next(h)));
+    const double w = std::sqrt(CGAL::cross_product(b - a, c - a).squared_length()) + 1e-300;
+    const Eigen::Vector3d g((a.x() + b.x() + c.x()) / 3., (a.y() + b.y() + c.y()) / 3., (a.z() + b.z() + c.z()) / 3.);
+    samples.emplace_back(w, g);
+    centre += w * g;
+    area += w;
+  }
+  centre /= area;
+  Eigen::Matrix3d covariance = Eigen::Matrix3d::Zero();
+  for(const auto& sample : samples)
+    covariance += sample.first * (sample.second - centre) * (sample.second - centre).transpose();
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(covariance);
+  std::array<Epick::Vector_3, 3> axes;
+  for(int i = 0; i < 3; ++i) // eigenvalues in increasing order
+    axes[i] = Epick::Vector_3(solver.eigenvectors()(0, i), solver.eigenvectors()(1, i), solver.eigenvectors()(2, i));
+  return {Epick::Point_3(centre.x(), centre.y(), centre.z()), axes};
+}
+
+} // namespace segmentation
+} // namespace internal
+
+/// \ingroup PkgConformalRemeshingRef
+/// Cuts patch `patch_faces` of `s` in two by the plane through its centroid orthogonal to one
+/// of its principal axes (`axis` 0: the axis of least extent, 2: of largest), trying the other
+/// axes if that plane leaves the patch whole. The negative side gets the label
+/// `s.number_of_patches` (incremented); call `s.renumber_patches()` after the last bisection.
+/// Vertices closer than `snap` to the plane are taken as on it.
+/// \returns false if no plane cuts the patch
+inline bool bisect_patch(Poly_annulus_segmentation& s, const std::vector<Poly_annulus_segmentation::Face>& patch_faces,
+                         int axis, double snap)
+{
+  const auto frame = internal::segmentation::principal_axes(s, patch_faces);
+  for(int k = 0; k < 3; ++k)
+    if(internal::segmentation::cut_by_plane(s, patch_faces, Epick::Plane_3(frame.first, frame.second[(axis + k) % 3]), snap,
+                                            s.number_of_patches))
+    {
+      ++s.number_of_patches;
+      return true;
+    }
+  return false;
+}
+
+/// \ingroup PkgConformalRemeshingRef
+/// Segments a triangle mesh into poly-annuli: connected patches of genus 0 with at least one
+/// boundary loop, each of which `conformal_flatten()` can flatten.
+///
+/// The surface is first cut by the given planes, then along sharp features (given, or detected
+/// by dihedral angle) and the borders of user patches. Each piece that still has a handle or no
+/// boundary is bisected by the plane through its centroid orthogonal to a principal axis (the
+/// axis of least extent first, which cuts a plate or a brake disc through its mid-plane like
+/// the paper's Fig. 9; a closed genus-0 piece along its largest axis), until every piece is a
+/// poly-annulus. Cuts along planes are planar sections, not zig-zag edge paths.
+///
+/// \tparam TriangleMesh a model of `FaceListGraph`
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map}
+///     \cgalParamDescription{the 3D points of the vertices}
+///     \cgalParamDefault{`boost::get(CGAL::vertex_point, mesh)`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{edge_is_constrained_map}
+///     \cgalParamDescription{the sharp features (a property map from edges to `bool`); replaces the detection}
+///     \cgalParamDefault{detected with `features_angle`}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{features_angle}
+///     \cgalParamDescription{the dihedral angle in degrees above which an edge is sharp (`Conformal_remeshing::parameters::features_angle()`; 0 or less: no feature)}
+///     \cgalParamDefault{60}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{face_patch_map}
+///     \cgalParamDescription{user patches: a property map from faces to patch ids; their borders are cuts}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{cut_planes}
+///     \cgalParamDescription{planes (a `std::vector<CGAL::Epick::Plane_3>`) that cut the surface first (`Conformal_remeshing::parameters::cut_planes()`)}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{snap_distance}
+///     \cgalParamDescription{vertices closer to a cutting plane than this are taken as on it (`Conformal_remeshing::parameters::snap_distance()`)}
+///     \cgalParamDefault{0.001 times the bounding-box diagonal}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \throws Error with `Error_code::INVALID_INPUT` when the mesh is not a valid, manifold,
+///         orientable triangle mesh (the message names the defect and one example), or when a
+///         piece cannot be made a poly-annulus.
+template <typename TriangleMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
+void segment_into_poly_annuli(const TriangleMesh& input, Poly_annulus_segmentation& s,
+                              const NamedParameters& np = CGAL::parameters::default_values())
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  using CGAL::parameters::is_default_parameter;
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor input_face;
+  typedef typename boost::graph_traits<TriangleMesh>::edge_descriptor input_edge;
+  typedef Poly_annulus_segmentation::Face Face;
+
+  const Mesh_check_report checks = check_mesh(input, np);
+  if(!checks.is_valid())
+    throw Error(Error_code::INVALID_INPUT, "invalid input mesh: " + checks.summary());
+
+  // --- a copy that remembers the input faces -------------------------------------------------
+  s.reset();
+  auto fim = CGAL::get_initialized_face_index_map(input, np);
+  auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(vertex_point, input));
+  std::vector<std::pair<input_face, Face> > face_pairs;
+  CGAL::copy_face_graph(input, s.mesh,
+                        CGAL::parameters::vertex_point_map(vpm).face_to_face_output_iterator(std::back_inserter(face_pairs)));
+  for(const auto& fp : face_pairs)
+    s.input_face[fp.second] = get(fim, fp.first);
+
+  const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(s.mesh);
+  const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin())
+                                    + CGAL::square(box.zmax() - box.zmin()));
+  const double snap = choose_parameter(get_parameter(np, internal_np::snap_distance), 1e-3 * diagonal);
+
+  // --- features -------------------------------------------------------------------------------
+  const auto given_features = get_parameter(np, CGAL::internal_np::edge_is_constrained);
+  if constexpr(!std::is_same<std::decay_t<decltype(given_features)>, CGAL::internal_np::Param_not_found>::value)
+  {
+    // The copy keeps the edge order of a Surface_mesh input; in general, match by endpoints.
+    std::map<std::pair<Epick::Point_3, Epick::Point_3>, bool> sharp;
+    for(input_edge e : edges(input))
+      if(get(given_features, e))
+      {
+        const auto a = get(vpm, source(e, input)), b = get(vpm, target(e, input));
+        const Epick::Point_3 p(a.x(), a.y(), a.z()), q(b.x(), b.y(), b.z());
+        sharp[std::minmax(p, q)] = true;
+      }
+    for(Poly_annulus_segmentation::Edge e : s.mesh.edges())
+      s.is_feature[e] = sharp.count(std::minmax(s.mesh.point(s.mesh.vertex(e, 0)), s.mesh.point(s.mesh.vertex(e, 1)))) > 0;
+  }
+  else
+  {
+    const double angle = choose_parameter(get_parameter(np, internal_np::features_angle), 60.);
+    if(angle > 0.)
+      CGAL::Polygon_mesh_processing::detect_sharp_edges(s.mesh, angle, s.is_feature);
+  }
+
+  // --- user patches and planes ----------------------------------------------------------------
+  const auto user_patches = get_parameter(np, CGAL::internal_np::face_patch);
+  if constexpr(!std::is_same<std::decay_t<decltype(user_patches)>, CGAL::internal_np::Param_not_found>::value)
+  {
+    std::map<input_face, std::size_t> label;
+    for(input_face f : faces(input))
+      label[f] = std::size_t(get(user_patches, f));
+    std::map<std::size_t, std::size_t> by_index;
+    for(input_face f : faces(input))
+      by_index[get(fim, f)] = label[f];
+    for(Face f : s.mesh.faces())
+      s.patch[f] = by_index[s.input_face[f]];
+  }
+  s.renumber_patches();
+  const std::vector<Epick::Plane_3> planes = choose_parameter(get_parameter(np, internal_np::cut_planes), std::vector<Epick::Plane_3>());
+  for(const Epick::Plane_3& plane : planes)
+  {
+    // Faces are listed afresh for each patch: cutting one splits faces of its neighbours.
+    const std::size_t before = s.number_of_patches;
+    for(std::size_t p = 0; p < before; ++p)
+      if(internal::segmentation::cut_by_plane(s, s.faces_of_patch(p), plane, snap, s.number_of_patches))
+        ++s.number_of_patches;
+    s.renumber_patches();
+  }
+
+  // --- bisection until every piece is a poly-annulus -------------------------------------------
+  for(int round = 0;; ++round)
+  {
+    std::vector<std::pair<std::size_t, long> > pieces_to_cut; // patch, genus
+    const std::vector<std::vector<Face> > patches = s.faces_of_patches();
+    for(std::size_t p = 0; p < patches.size(); ++p)
+    {
+      const Extracted_patch patch = extract_patch(s, patches[p]);
+      if(!patch.is_poly_annulus())
+        pieces_to_cut.emplace_back(p, patch.genus);
+    }
+    if(pieces_to_cut.empty())
+      break;
+    for(const auto& piece : pieces_to_cut)
+    {
+      // Listed afresh: cutting one patch splits faces of its neighbours.
+      const std::vector<Face> faces = s.faces_of_patch(piece.first);
+      if(round >= 64)
+        throw Error(Error_code::INVALID_INPUT, "segment_into_poly_annuli: a piece of " + std::to_string(faces.size())
+                                                 + " faces keeps genus " + std::to_string(piece.second)
+                                                 + " after 64 rounds of plane bisection");
+      // A handle: the plane of least extent first (a plate's mid-plane), then the others in
+      // turn from round to round; a closed sphere: across its largest extent.
+      const int axis = piece.second > 0 ? (round % 3 == 0 ? 0 : round % 3 == 1 ? 2 : 1) : 2;
+      if(!bisect_patch(s, faces, axis, snap))
+        throw Error(Error_code::INVALID_INPUT, "segment_into_poly_annuli: no plane through its centroid cuts a piece of "
+                                                 + std::to_string(faces.size()) + " faces of genus " + std::to_string(piece.second));
+    }
+    s.renumber_patches();
+  }
+
+  s.feature_edges = 0;
+  s.dangling_feature_edges = 0;
+  for(Poly_annulus_segmentation::Edge e : s.mesh.edges())
+    if(s.is_feature[e])
+    {
+      ++s.feature_edges;
+      s.dangling_feature_edges += !s.is_patch_boundary(e);
+    }
+}
+
+} // namespace Conformal_remeshing
+} // namespace CGAL
+
+#endif // CGAL_CONFORMAL_REMESHING_SEGMENT_INTO_POLY_ANNULI_H
