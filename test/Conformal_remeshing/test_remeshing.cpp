@@ -6,6 +6,7 @@
 #include <CGAL/Conformal_remeshing/check_mesh.h>
 #include <CGAL/Conformal_remeshing/mesh_quality.h>
 
+#include "remeshing_checks.h"
 #include "test_surfaces.h"
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
@@ -26,60 +27,9 @@ namespace CR = CGAL::Conformal_remeshing;
 namespace bm = CGAL::Conformal_remeshing::benchmarks;
 typedef CGAL::Epick K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+using remeshing_checks::check_remeshing;
+using remeshing_checks::diagonal;
 
-namespace {
-
-double diagonal(const Mesh& m)
-{
-  const CGAL::Bbox_3 b = CGAL::Polygon_mesh_processing::bbox(m);
-  return std::sqrt(CGAL::square(b.xmax() - b.xmin()) + CGAL::square(b.ymax() - b.ymin()) + CGAL::square(b.zmax() - b.zmin()));
-}
-
-// Remeshes `input` at 1% of its diagonal and checks what issue #5 asks that holds today:
-// minimum angle, edge lengths, topology and boundaries kept, no self-intersection, every
-// output vertex on the input surface, and the reported surface location of every vertex.
-void check_remeshing(const Mesh& input, double min_angle_bound)
-{
-  Mesh output;
-  std::vector<CR::Surface_location> locations;
-  const CR::Remeshing_report report = CR::remesh_conformal(input, output, CGAL::parameters::default_values(), &locations);
-  ASSERT_GT(output.number_of_faces(), 100u);
-  const double h = report.target_edge_length;
-  EXPECT_NEAR(h, 0.01 * diagonal(input), 1e-12 * diagonal(input));
-
-  const CR::Mesh_quality_report q = CR::mesh_quality(output);
-  EXPECT_GE(q.minimum_angle.min, min_angle_bound);
-  EXPECT_LT(q.share_with_minimum_angle_below(25.), 0.01);
-
-  EXPECT_GT(CR::share_of_edges_with_length_in(output, 0.7 * h, 1.4 * h), 0.95);
-
-  const CR::Mesh_check_report in = CR::check_mesh(input), out = CR::check_mesh(output);
-  EXPECT_TRUE(out.is_valid()) << out.summary();
-  ASSERT_EQ(out.components.size(), in.components.size());
-  EXPECT_EQ(out.total_genus(), in.total_genus());
-  EXPECT_EQ(out.total_boundary_loops(), in.total_boundary_loops());
-  EXPECT_FALSE(CGAL::Polygon_mesh_processing::does_self_intersect(output));
-
-  // Every output vertex is on the input surface, and at the reported face and coordinates.
-  typedef CGAL::AABB_face_graph_triangle_primitive<Mesh> Primitive;
-  typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive> > Tree;
-  const Tree tree(faces(input).first, faces(input).second, input);
-  ASSERT_EQ(locations.size(), output.number_of_vertices());
-  double worst_distance = 0., worst_location = 0.;
-  for(auto v : output.vertices())
-  {
-    worst_distance = (std::max)(worst_distance, std::sqrt(tree.squared_distance(output.point(v))));
-    const CR::Surface_location& l = locations[v.idx()];
-    const auto hf = input.halfedge(Mesh::Face_index(Mesh::size_type(l.input_face)));
-    const K::Point_3 x = CGAL::barycenter(input.point(input.source(hf)), l.coordinates[0], input.point(input.target(hf)),
-                                          l.coordinates[1], input.point(input.target(input.next(hf))), l.coordinates[2]);
-    worst_location = (std::max)(worst_location, std::sqrt(CGAL::squared_distance(x, output.point(v))));
-  }
-  EXPECT_LT(worst_distance, 1e-9 * diagonal(input));
-  EXPECT_LT(worst_location, 1e-9 * diagonal(input));
-}
-
-} // namespace
 
 TEST(RemeshConformal, WavyConcaveStrip)
 {

@@ -543,7 +543,7 @@ public:
     std::size_t count = 0;
     // Flips terminate in exact arithmetic; with rounding, near-cocircular quads could flip back
     // and forth, so the number of flips is capped far above what converging runs need.
-    const std::size_t cap = 100 * std::size_t(number_of_edges()) + 10000;
+    const std::size_t cap = 20 * std::size_t(number_of_edges()) + 1000;
     while(!stack.empty() && count < cap)
     {
       const int e = stack.back();
