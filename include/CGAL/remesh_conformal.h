@@ -58,7 +58,7 @@ struct Remeshing_report
   std::size_t plane_cuts = 0;       ///< cuts by planes: given, and bisections of the segmentation
   std::size_t patch_bisections = 0; ///< patches bisected because their flattening failed or stretched
   std::size_t feature_edges = 0;    ///< sharp edges of the refined input
-  /// feature edges inside a patch rather than on a patch boundary: not kept in the output yet
+  /// feature edges inside a patch rather than between two (the patch is slit open along them)
   std::size_t dangling_feature_edges = 0;
   std::vector<Flattening_report> patches; ///< the flattening of each patch
   int max_newton_iterations = 0;

@@ -157,6 +157,36 @@ TEST(RemeshAnyTopology, FeatureEdgesAreKept)
   EXPECT_NEAR(length_out, length_in, 0.01 * length_in); // chords of circles are a little shorter
 }
 
+TEST(RemeshAnyTopology, FeatureInsideAPatchIsKept)
+{
+  // A given feature chain that ends inside the surface (it separates nothing): the patch is slit
+  // open along it, and the output has the chain as a path of edges.
+  Mesh square;
+  CGAL::make_grid(20, 20, square, [](int i, int j) { return K::Point_3(i / 20., j / 20., 0.05 * std::sin(3. * i / 20.)); }, true);
+  auto feature = square.add_property_map<Mesh::Edge_index, bool>("e:feature", false).first;
+  double chain = 0.;
+  for(auto e : square.edges())
+  {
+    const K::Point_3 &a = square.point(square.vertex(e, 0)), &b = square.point(square.vertex(e, 1));
+    if(std::abs(a.y() - 0.5) < 1e-12 && std::abs(b.y() - 0.5) < 1e-12 && (std::min)(a.x(), b.x()) > 0.24 && (std::max)(a.x(), b.x()) < 0.76)
+    {
+      feature[e] = true;
+      chain += std::sqrt(CGAL::squared_distance(a, b));
+    }
+  }
+  Mesh output;
+  const CR::Remeshing_report report = check_remeshing(square, 20., CGAL::parameters::edge_is_constrained_map(feature), &output);
+  EXPECT_EQ(report.dangling_feature_edges, 10u);
+  double on_chain = 0.;
+  for(auto e : output.edges())
+  {
+    const K::Point_3 &a = output.point(output.vertex(e, 0)), &b = output.point(output.vertex(e, 1));
+    if(std::abs(a.y() - 0.5) < 1e-12 && std::abs(b.y() - 0.5) < 1e-12 && (std::min)(a.x(), b.x()) > 0.249)
+      on_chain += std::sqrt(CGAL::squared_distance(a, b));
+  }
+  EXPECT_NEAR(on_chain, chain, 1e-3 * chain); // chords of the gently curved chain
+}
+
 TEST(RemeshAnyTopology, UserPatches)
 {
   // Two user patches on a sphere, split by the plane x = 0.3 along the input's own edges.

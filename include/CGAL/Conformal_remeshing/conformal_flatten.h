@@ -330,8 +330,9 @@ Conformal_flattening conformal_flatten(const TriangleMesh& mesh,
         welded = l;
   }
   // A planar patch (a CAD face) is flat already: its isometric layout is the flattening, with
-  // no welding, no flow and no split (the map is the identity inside every triangle).
-  const bool planar = internal::welding::is_planar(patch);
+  // no welding, no flow and no split (the map is the identity inside every triangle). Not if it
+  // touches itself (a slit along a feature): the flow must open it.
+  const bool planar = checks.count(Mesh_defect::DUPLICATED_VERTEX) == 0 && internal::welding::is_planar(patch);
   const std::size_t points_before = patch.points.size();
   const double maximum_length = choose_parameter(get_parameter(np, internal_np::maximum_edge_length), 0.);
   if(maximum_length > 0. && !planar)

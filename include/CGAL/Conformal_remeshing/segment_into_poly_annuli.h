@@ -59,7 +59,7 @@ struct Poly_annulus_segmentation
   Mesh::Property_map<Edge, bool> is_feature;
   std::size_t number_of_patches = 0;
   std::size_t feature_edges = 0;
-  /// feature edges inside a patch (the same patch on both sides): not kept in the output yet
+  /// feature edges inside a patch (the same patch on both sides): the patch is slit open along them
   std::size_t dangling_feature_edges = 0;
   std::size_t plane_cuts = 0;
 
@@ -83,6 +83,9 @@ struct Poly_annulus_segmentation
     const auto h = mesh.halfedge(e);
     return mesh.is_border(e) || patch[mesh.face(h)] != patch[mesh.face(mesh.opposite(h))];
   }
+
+  /// `true` if `e` bounds a patch on at least one side: a patch boundary or a sharp feature.
+  bool is_curve_edge(Edge e) const { return is_feature[e] || is_patch_boundary(e); }
 
   /// Renumbers the patches `0 .. number_of_patches - 1` by connected components: two faces are
   /// in the same patch when they share an edge that is not a feature and had the same label.
@@ -140,7 +143,9 @@ struct Poly_annulus_segmentation
 
 /// \ingroup PkgConformalRemeshingRef
 /// One patch as a mesh of its own. Vertices where the patch touches itself (a pinched vertex)
-/// are duplicated, so `mesh` is always a manifold.
+/// are duplicated, so `mesh` is always a manifold. The patch is also cut open along the sharp
+/// features inside it (a slit, whose two sides are boundary edges), so that these features are
+/// patch boundaries too and survive as chains of output edges.
 struct Extracted_patch
 {
   typedef CGAL::Surface_mesh<Epick::Point_3> Mesh;
@@ -180,7 +185,8 @@ inline Extracted_patch extract_patch(const Poly_annulus_segmentation& s, const s
   for(std::size_t i = 0; i < faces.size(); ++i)
     local_face[faces[i]] = i;
   // Corners 3i+c of local face i; corners of the same vertex in faces joined through an edge of
-  // the patch are the same patch vertex (a fan), so a pinched vertex gives one vertex per fan.
+  // the patch that is not a feature are the same patch vertex (a fan), so a pinched vertex gives
+  // one vertex per fan, and a vertex inside a feature chain one per side.
   std::vector<std::size_t> parent(3 * faces.size());
   std::iota(parent.begin(), parent.end(), std::size_t(0));
   auto corner = [&](Face f, Poly_annulus_segmentation::Vertex v) {
@@ -197,7 +203,8 @@ inline Extracted_patch extract_patch(const Poly_annulus_segmentation& s, const s
     for(auto h : CGAL::halfedges_around_face(m.halfedge(faces[i]), m))
     {
       const Face g = m.face(m.opposite(h));
-      if(g == Poly_annulus_segmentation::Mesh::null_face() || s.patch[g] != s.patch[faces[i]] || !(faces[i] < g))
+      if(g == Poly_annulus_segmentation::Mesh::null_face() || s.patch[g] != s.patch[faces[i]] || !(faces[i] < g)
+         || s.is_feature[m.edge(h)])
         continue;
       for(auto v : {m.source(h), m.target(h)})
         parent[internal::segmentation::find_root(parent, corner(faces[i], v))] =

@@ -35,7 +35,8 @@ struct Curve_samples
   std::size_t number_of_curves = 0;
 };
 
-/// Splits the patch boundaries of `s` (edges between two patches, and borders) into curves
+/// Splits the patch boundaries of `s` (edges between two patches, borders, and sharp features
+/// inside a patch, along which the patch is slit open) into curves
 /// between junctions (vertices where other than two boundary edges meet, where the pair of
 /// patches changes, or where the curve turns by more than `corner_degrees`), and samples each
 /// curve at spacing close to `spacing`. A curve that closes on itself gets at least 3 pieces,
@@ -52,7 +53,7 @@ inline Curve_samples sample_boundary_curves(const Poly_annulus_segmentation& s, 
 
   std::vector<std::vector<Halfedge> > outgoing(m.number_of_vertices());
   for(auto e : m.edges())
-    if(s.is_patch_boundary(e))
+    if(s.is_curve_edge(e))
       for(Halfedge h : {m.halfedge(e), m.opposite(m.halfedge(e))})
         outgoing[m.source(h)].push_back(h);
   std::vector<char> junction(m.number_of_vertices(), 0);
