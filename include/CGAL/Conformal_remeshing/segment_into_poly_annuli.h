@@ -281,6 +281,15 @@ inline bool cut_by_plane(Segmentation& s, const std::vector<Segmentation::Face>&
     const Epick::Point_3& p = m.point(v);
     return (plane.a() * p.x() + plane.b() * p.y() + plane.c() * p.z() + plane.d()) / norm;
   };
+  // Vertices on patch boundaries snap from farther: a cut that meets a boundary near one of its
+  // vertices ends there, rather than making a short boundary piece next to it (which would
+  // leave a short output edge and thin triangles beside it).
+  auto on_curve = [&](Segmentation::Vertex v) {
+    for(auto h : CGAL::halfedges_around_target(m.halfedge(v), m))
+      if(s.is_curve_edge(m.edge(h)))
+        return true;
+    return false;
+  };
   std::map<Segmentation::Vertex, int> side;
   bool positive = false, negative = false;
   for(Segmentation::Face f : faces)
@@ -288,7 +297,7 @@ inline bool cut_by_plane(Segmentation& s, const std::vector<Segmentation::Face>&
       if(!side.count(v))
       {
         const double d = distance(v);
-        side[v] = std::abs(d) <= snap ? 0 : (d > 0. ? 1 : -1);
+        side[v] = std::abs(d) <= (on_curve(v) ? 5. * snap : snap) ? 0 : (d > 0. ? 1 : -1);
         positive = positive || side[v] > 0;
         negative = negative || side[v] < 0;
       }
