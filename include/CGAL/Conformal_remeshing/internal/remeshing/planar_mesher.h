@@ -14,7 +14,9 @@
 #include <CGAL/Delaunay_mesh_size_criteria_2.h>
 #include <CGAL/Delaunay_mesh_vertex_base_2.h>
 #include <CGAL/Delaunay_mesher_2.h>
-#include <CGAL/Delaunay_mesher_no_edge_refinement_2.h>
+#include <CGAL/Mesh_2/Do_not_refine_edges.h>
+#include <CGAL/Mesh_2/Refine_edges.h>
+#include <CGAL/Mesh_2/Refine_faces.h>
 
 #include <cmath>
 #include <list>
@@ -133,6 +135,52 @@ private:
   Size_field size_;
 };
 
+/// Delaunay refinement of the faces only, for loops whose samples are shared with a neighbouring
+/// patch: no point is ever added on a constrained edge, and a new point is refused only when it
+/// would make a constrained edge non-Delaunay. (CGAL's `Delaunay_mesher_no_edge_refinement_2`
+/// refuses every point in a constrained edge's diametral circle, which blocks all refinement of a
+/// domain whose boundary is sampled more coarsely than its inside needs, like a long cylinder's
+/// annulus with a tiny inner circle.) The domain must be marked before.
+template <typename CDT, typename Criteria>
+class Fixed_boundary_mesher_2
+{
+  // Local Delaunay conformity of constrained edges, also for a point about to be inserted. The
+  // conflict zone reports its boundary edges from the face outside it, `f`: the edge stays
+  // locally Delaunay if the point is not inside the circle through the edge and `f`'s far vertex.
+  struct Conforming : CGAL::Mesh_2::Is_locally_conforming_Delaunay<CDT>
+  {
+    using CGAL::Mesh_2::Is_locally_conforming_Delaunay<CDT>::operator();
+    bool operator()(const CDT& cdt, const typename CDT::Face_handle& f, int i, const typename CDT::Point& p) const
+    {
+      if(cdt.is_infinite(f))
+        return true;
+      return CGAL::side_of_bounded_circle(f->vertex(CDT::cw(i))->point(), f->vertex(CDT::ccw(i))->point(),
+                                          f->vertex(i)->point(), p) != CGAL::ON_BOUNDED_SIDE;
+    }
+  };
+  typedef CGAL::Mesh_2::Refine_edges<CDT, Conforming, CGAL::Mesh_2::Do_not_refine_edges<CDT, Conforming> > Edges_level;
+  typedef CGAL::Mesh_2::Refine_faces<CDT, Criteria, Edges_level> Faces_level;
+
+public:
+  Fixed_boundary_mesher_2(CDT& cdt, const Criteria& criteria)
+    : criteria_(criteria), edges_(cdt, null_level_), faces_(cdt, criteria_, edges_)
+  {}
+
+  void refine_mesh()
+  {
+    edges_.scan_triangulation();
+    faces_.scan_triangulation();
+    faces_.refine(visitor_);
+  }
+
+private:
+  Criteria criteria_;
+  CGAL::Null_mesher_level null_level_;
+  CGAL::Null_mesh_visitor visitor_;
+  Edges_level edges_;
+  Faces_level faces_;
+};
+
 /// A planar triangle mesh: the boundary samples first, in loop order, then the points the
 /// refinement added.
 struct Planar_mesh
@@ -187,7 +235,7 @@ void mark_domain(CDT& cdt)
 /// each moves to the mean of its neighbours when its star stays positively oriented, the points
 /// are triangulated again with the same constraints and refined again, so the bounds still hold.
 /// With `split_boundary == false` no point is added on the loops (their samples are shared with
-/// a neighbouring patch): a bad triangle whose circumcentre would encroach a loop edge is kept.
+/// a neighbouring patch; see `Fixed_boundary_mesher_2`).
 template <typename Kernel, typename Size_field>
 Planar_mesh mesh_planar_domain(const std::vector<std::vector<Boundary_sample> >& loops, double min_angle_degrees,
                                const Size_field& size, int smoothing_iterations, bool split_boundary = true)
@@ -212,8 +260,7 @@ Planar_mesh mesh_planar_domain(const std::vector<std::vector<Boundary_sample> >&
     }
     else
     {
-      CGAL::Delaunay_mesher_no_edge_refinement_2<CDT, Criteria> mesher(cdt, Criteria(sine * sine, size));
-      mesher.init(true);
+      Fixed_boundary_mesher_2<CDT, Criteria> mesher(cdt, Criteria(sine * sine, size));
       mesher.refine_mesh();
     }
   };
