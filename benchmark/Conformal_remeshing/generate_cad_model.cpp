@@ -5,19 +5,13 @@
 // The file is written to OUT.tmp first and renamed, so a reader never sees a half-written model.
 
 #include <cad_like_models.h>
+#include <model_tool.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/boost/graph/IO/OFF.h>
 #include <CGAL/Surface_mesh.h>
 
-#include <cerrno>
-#include <cmath>
 #include <cstdint>
-#include <cstdio>
-#include <cstdlib>
-#include <cstring>
 #include <exception>
-#include <fstream>
 #include <iostream>
 #include <sstream>
 #include <stdexcept>
@@ -57,29 +51,9 @@ void print_help(std::ostream& out)
          "  --help              this text\n";
 }
 
-double parse_double(const std::string& option, const std::string& text)
-{
-  char* end = nullptr;
-  errno = 0;
-  const double value = std::strtod(text.c_str(), &end);
-  if(text.empty() || *end != '\0' || errno != 0 || !std::isfinite(value))
-    throw std::invalid_argument(option + ": not a number: '" + text + "'");
-  return value;
-}
-
-long long parse_integer(const std::string& option, const std::string& text)
-{
-  char* end = nullptr;
-  errno = 0;
-  const long long value = std::strtoll(text.c_str(), &end, 10);
-  if(text.empty() || *end != '\0' || errno != 0)
-    throw std::invalid_argument(option + ": not an integer: '" + text + "'");
-  return value;
-}
-
 int parse_int(const std::string& option, const std::string& text)
 {
-  const long long v = parse_integer(option, text);
+  const long long v = bm::parse_integer(option, text);
   if(v < -1000000000LL || v > 1000000000LL)
     throw std::invalid_argument(option + ": out of range: '" + text + "'");
   return int(v);
@@ -96,30 +70,10 @@ bm::Circular_hole parse_hole(const std::string& text)
   if(std::getline(in, rest))
     throw std::invalid_argument("--hole: expected X,Y,R, got '" + text + "'");
   bm::Circular_hole h;
-  h.x = parse_double("--hole", parts[0]);
-  h.y = parse_double("--hole", parts[1]);
-  h.radius = parse_double("--hole", parts[2]);
+  h.x = bm::parse_double("--hole", parts[0]);
+  h.y = bm::parse_double("--hole", parts[1]);
+  h.radius = bm::parse_double("--hole", parts[2]);
   return h;
-}
-
-void write_atomically(const Mesh& mesh, const std::string& path)
-{
-  const std::string temporary = path + ".tmp";
-  {
-    std::ofstream out(temporary);
-    if(!out)
-      throw std::runtime_error("cannot open '" + temporary + "' for writing: " + std::strerror(errno));
-    if(!CGAL::IO::write_OFF(out, mesh, CGAL::parameters::stream_precision(17)) || !out.flush()) {
-      out.close();
-      std::remove(temporary.c_str());
-      throw std::runtime_error("cannot write '" + temporary + "'");
-    }
-  }
-  if(std::rename(temporary.c_str(), path.c_str()) != 0) {
-    const std::string reason = std::strerror(errno);
-    std::remove(temporary.c_str());
-    throw std::runtime_error("cannot rename '" + temporary + "' to '" + path + "': " + reason);
-  }
 }
 
 } // namespace
@@ -143,26 +97,26 @@ int main(int argc, char** argv)
         if(i + 1 >= argc)
           throw std::invalid_argument(arg + ": missing value");
         const std::string value = argv[++i];
-        if(arg == "--length") plate.length = parse_double(arg, value);
-        else if(arg == "--width") plate.width = parse_double(arg, value);
-        else if(arg == "--thickness") plate.thickness = parse_double(arg, value);
-        else if(arg == "--corner-radius") plate.corner_radius = parse_double(arg, value);
+        if(arg == "--length") plate.length = bm::parse_double(arg, value);
+        else if(arg == "--width") plate.width = bm::parse_double(arg, value);
+        else if(arg == "--thickness") plate.thickness = bm::parse_double(arg, value);
+        else if(arg == "--corner-radius") plate.corner_radius = bm::parse_double(arg, value);
         else if(arg == "--segments") {
           plate.segments_per_circle = disc_segments = parse_int(arg, value);
           segments_given = true;
         }
         else if(arg == "--holes") plate.number_of_random_holes = parse_int(arg, value);
         else if(arg == "--seed") {
-          const long long s = parse_integer(arg, value);
+          const long long s = bm::parse_integer(arg, value);
           if(s < 0)
             throw std::invalid_argument("--seed: must be non-negative");
           plate.seed = static_cast<std::uint64_t>(s);
         }
-        else if(arg == "--min-radius") plate.min_hole_radius = parse_double(arg, value);
-        else if(arg == "--max-radius") plate.max_hole_radius = parse_double(arg, value);
-        else if(arg == "--clearance") plate.min_clearance = parse_double(arg, value);
+        else if(arg == "--min-radius") plate.min_hole_radius = bm::parse_double(arg, value);
+        else if(arg == "--max-radius") plate.max_hole_radius = bm::parse_double(arg, value);
+        else if(arg == "--clearance") plate.min_clearance = bm::parse_double(arg, value);
         else if(arg == "--hole") plate.holes.push_back(parse_hole(value));
-        else if(arg == "--radius") disc_radius = parse_double(arg, value);
+        else if(arg == "--radius") disc_radius = bm::parse_double(arg, value);
         else
           throw std::invalid_argument("unknown option '" + arg + "' (see --help)");
       }
@@ -182,15 +136,9 @@ int main(int argc, char** argv)
     else
       throw std::invalid_argument("unknown model '" + model + "' (known: perforated_plate, sliver_fan_disc)");
 
-    write_atomically(mesh, output);
-    const bm::Cad_model_statistics s = bm::cad_model_statistics(mesh);
-    std::cout << model << ": " << output << ": " << s.vertices << " vertices, " << s.faces << " faces, genus "
-              << s.genus;
-    if(s.boundary_loops > 0)
-      std::cout << ", " << s.boundary_loops << " boundary loops";
-    std::cout << ", min angle " << s.min_angle_degrees << " deg, "
-              << 100. * s.share_min_angle_below_10 << "% of triangles below 10 deg, "
-              << 100. * s.share_min_angle_below_1 << "% below 1 deg" << std::endl;
+    bm::write_off_atomically(mesh, output);
+    bm::print_model_summary(std::cout, model, output, bm::cad_model_statistics(mesh));
+    std::cout << std::endl;
     return 0;
   }
   catch(const std::exception& e) {

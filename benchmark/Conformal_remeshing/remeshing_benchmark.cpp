@@ -148,8 +148,11 @@ int main(int argc, char** argv)
               << std::setw(8) << "" << std::setw(8) << a.skewness / b.skewness << std::setw(8) << "" << std::setw(10)
               << a.hausdorff_to / b.hausdorff_to << std::setw(10) << a.hausdorff_from / b.hausdorff_from << "\n";
     json << (k ? ",\n" : "") << "  {\"model\": \"" << models[k].first << "\", \"target_edge_length\": " << h
-         << ", \"stage_seconds\": {\"flattening\": " << report.seconds_checks_and_flattening << ", \"planar_meshing\": "
-         << report.seconds_planar_meshing << ", \"pull_back\": " << report.seconds_pull_back << "}, \"conformal\": ";
+         << ", \"patches\": " << report.number_of_patches << ", \"stage_seconds\": {\"segmentation\": "
+         << report.seconds_segmentation << ", \"flattening\": " << report.seconds_flattening
+         << ", \"meshing_and_pull_back\": " << report.seconds_meshing_stage << ", \"gluing\": " << report.seconds_gluing
+         << ", \"planar_meshing_thread_seconds\": " << report.seconds_planar_meshing
+         << ", \"pull_back_thread_seconds\": " << report.seconds_pull_back << "}, \"conformal\": ";
     write_json(json, a);
     json << ", \"isotropic\": ";
     write_json(json, b);

@@ -1,7 +1,9 @@
-// Tests of the CAD-like model generators (benchmark/Conformal_remeshing/generators) and of the
-// shipped default model examples/Conformal_remeshing/data/perforated_plate.off.
+// Tests of the CAD-like model generators (benchmark/Conformal_remeshing/generators), of the
+// paper-scale models at a small size, and of the shipped default model
+// examples/Conformal_remeshing/data/perforated_plate.off.
 
 #include <cad_like_models.h>
+#include <paper_models.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
@@ -16,6 +18,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -62,13 +65,15 @@ std::array<std::size_t, 3> face_vertices(const Mesh& mesh, Mesh::Face_index f)
   return v;
 }
 
-// Every hard requirement on a generated closed model.
-void expect_valid_closed_model(const Mesh& mesh, long genus)
+// Every hard requirement on a generated model: closed and outward oriented without boundary
+// loops, open otherwise.
+void expect_valid_model(const Mesh& mesh, long genus, std::size_t boundary_loops)
 {
   ASSERT_FALSE(mesh.is_empty());
   EXPECT_TRUE(mesh.is_valid(false));
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(mesh));
   EXPECT_TRUE(CGAL::is_triangle_mesh(mesh));
-  EXPECT_TRUE(CGAL::is_closed(mesh));
+  EXPECT_EQ(CGAL::is_closed(mesh), boundary_loops == 0);
   for(Mesh::Vertex_index v : mesh.vertices())
     EXPECT_FALSE(PMP::is_non_manifold_vertex(v, mesh)) << "vertex " << v;
 
@@ -86,13 +91,17 @@ void expect_valid_closed_model(const Mesh& mesh, long genus)
   EXPECT_TRUE(std::adjacent_find(points.begin(), points.end()) == points.end()) << "duplicated vertex";
 
   EXPECT_FALSE(PMP::does_self_intersect(mesh));
-  EXPECT_TRUE(PMP::is_outward_oriented(mesh));
+  if(boundary_loops == 0)
+    EXPECT_TRUE(PMP::is_outward_oriented(mesh));
 
   const bm::Cad_model_statistics s = bm::cad_model_statistics(mesh);
-  EXPECT_EQ(s.boundary_loops, 0u);
+  EXPECT_EQ(s.components, 1u);
+  EXPECT_EQ(s.boundary_loops, boundary_loops);
   EXPECT_EQ(s.genus, genus);
-  EXPECT_EQ(s.euler_characteristic, 2 - 2 * genus);
+  EXPECT_EQ(s.euler_characteristic, 2 - 2 * genus - long(boundary_loops));
 }
+
+void expect_valid_closed_model(const Mesh& mesh, long genus) { expect_valid_model(mesh, genus, 0); }
 
 bool same_mesh(const Mesh& a, const Mesh& b)
 {
@@ -231,6 +240,119 @@ TEST(CadLikeModels, SliverFanDisc)
   EXPECT_NEAR(s.min_angle_degrees, 180. / 64., 1e-9);
   EXPECT_EQ(s.boundary_loops, 1u);
   EXPECT_EQ(s.genus, 0);
+}
+
+// --- paper-scale models (paper_models.h), at 10k vertices ---------------------------------------
+
+void expect_valid_paper_model(bm::Paper_model model)
+{
+  const bm::Paper_model_info& info = bm::paper_model_info(model);
+  SCOPED_TRACE(info.name);
+  bm::Paper_model_parameters p;
+  p.target_vertices = 10000;
+  Mesh mesh;
+  bm::make_paper_model(mesh, model, p);
+  expect_valid_model(mesh, info.genus, info.boundary_loops);
+  // The brake's halves are sized like the whole disc: two of its three vertex levels.
+  const double expected = model == bm::Paper_model::brake_disc_upper_half || model == bm::Paper_model::brake_disc_lower_half
+                            ? 10000. * 2. / 3. : 10000.;
+  EXPECT_NEAR(double(mesh.number_of_vertices()), expected, 0.03 * expected);
+  // Even this coarse, more than half of the triangles are slivers, as in CAD exports.
+  EXPECT_GT(bm::cad_model_statistics(mesh).share_min_angle_below_10, 0.5);
+}
+
+TEST(PaperModels, SuspensionArm) { expect_valid_paper_model(bm::Paper_model::suspension_arm); }
+TEST(PaperModels, Shield) { expect_valid_paper_model(bm::Paper_model::shield); }
+TEST(PaperModels, RadiatorShell) { expect_valid_paper_model(bm::Paper_model::radiator_shell); }
+TEST(PaperModels, Chassis) { expect_valid_paper_model(bm::Paper_model::chassis); }
+TEST(PaperModels, BrakeDisc) { expect_valid_paper_model(bm::Paper_model::brake_disc); }
+TEST(PaperModels, BrakeDiscUpperHalf) { expect_valid_paper_model(bm::Paper_model::brake_disc_upper_half); }
+TEST(PaperModels, BrakeDiscLowerHalf) { expect_valid_paper_model(bm::Paper_model::brake_disc_lower_half); }
+
+TEST(PaperModels, TopologyAsInThePaper)
+{
+  EXPECT_EQ(bm::paper_model_info(bm::Paper_model::brake_disc).genus, 83);
+  EXPECT_EQ(bm::paper_model_info(bm::Paper_model::brake_disc_upper_half).boundary_loops, 84u);
+  EXPECT_EQ(bm::paper_model_info(bm::Paper_model::brake_disc_lower_half).boundary_loops, 84u);
+  for(const bm::Paper_model_info& info : bm::paper_models())
+    EXPECT_EQ(bm::paper_model_from_name(info.name), info.model);
+  EXPECT_THROW(bm::paper_model_from_name("brake"), std::invalid_argument);
+}
+
+// The mid-plane cut of the disc lies on its edges: the two halves are exactly its triangles.
+TEST(PaperModels, BrakeHalvesAreTheDiscCutAtItsMidPlane)
+{
+  bm::Paper_model_parameters p;
+  p.target_vertices = 5000;
+  p.seed = 9;
+  Mesh disc, upper, lower;
+  bm::make_brake_disc(disc, p);
+  bm::make_brake_disc_half(upper, p, true);
+  bm::make_brake_disc_half(lower, p, false);
+  auto triangles = [](const Mesh& mesh) {
+    std::vector<std::array<Point_3, 3> > result;
+    for(Mesh::Face_index f : mesh.faces()) {
+      std::array<Point_3, 3> t;
+      std::size_t i = 0;
+      for(Mesh::Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+        t[i++] = mesh.point(v);
+      std::rotate(t.begin(), std::min_element(t.begin(), t.end()), t.end()); // keeps the orientation
+      result.push_back(t);
+    }
+    return result;
+  };
+  std::vector<std::array<Point_3, 3> > whole = triangles(disc), halves = triangles(upper), below = triangles(lower);
+  halves.insert(halves.end(), below.begin(), below.end());
+  std::sort(whole.begin(), whole.end());
+  std::sort(halves.begin(), halves.end());
+  EXPECT_TRUE(whole == halves);
+  for(const Mesh* half : {&upper, &lower})
+    for(Mesh::Halfedge_index h : half->halfedges())
+      if(half->is_border(h))
+        EXPECT_EQ(half->point(half->target(h)).z(), 14.); // the mid-plane of the 28 mm disc
+}
+
+TEST(PaperModels, SizeKnobAndDeterminism)
+{
+  for(const bm::Paper_model_info& info : bm::paper_models()) {
+    SCOPED_TRACE(info.name);
+    bm::Paper_model_parameters p;
+    p.target_vertices = 25000;
+    Mesh a, b, c;
+    bm::make_paper_model(a, info.model, p);
+    bm::make_paper_model(b, info.model, p);
+    EXPECT_TRUE(same_mesh(a, b));
+    p.seed = 2;
+    bm::make_paper_model(c, info.model, p);
+    EXPECT_FALSE(same_mesh(a, c));
+    const double whole = info.model == bm::Paper_model::brake_disc_upper_half ||
+                         info.model == bm::Paper_model::brake_disc_lower_half ? 2. / 3. : 1.;
+    EXPECT_NEAR(double(a.number_of_vertices()), whole * 25000., whole * 25000. * 0.02);
+    EXPECT_GT(bm::cad_model_statistics(a).share_min_angle_below_10, 0.8);
+  }
+}
+
+TEST(PaperModels, RoundedLoops)
+{
+  typedef bm::Rounded_loop Loop;
+  // A rounded square: 4 quarter arcs of 2 segments each at 8 segments per turn, both ends kept.
+  const Loop square = Loop::rounded_polygon({{{0., 0.}, {10., 0.}, {10., 10.}, {0., 10.}}}, {2., 2., 2., 2.});
+  EXPECT_EQ(square.size(8), 12u);
+  std::vector<bm::internal::Planar_point> inner, outer;
+  square.sample(-1., 8, inner);
+  square.sample(1., 8, outer);
+  ASSERT_EQ(inner.size(), 12u);
+  ASSERT_EQ(outer.size(), 12u);
+  for(std::size_t i = 0; i < inner.size(); ++i) // offset copies lie 2 apart on common normals
+    EXPECT_NEAR(std::sqrt(CGAL::squared_distance(inner[i], outer[i])), 2., 1e-12);
+  EXPECT_EQ(Loop::slot(0., 0., 10., 0., 1.).size(8), 10u);
+  EXPECT_EQ(Loop::circle(0., 0., 1.).size(8), 8u);
+
+  EXPECT_THROW(Loop::rounded_polygon({{{0., 0.}, {0., 10.}, {10., 10.}, {10., 0.}}}, {1., 1., 1., 1.}),
+               std::invalid_argument); // clockwise
+  EXPECT_THROW(Loop(std::vector<Loop::Corner>{{0., 0., 4.}, {1., 0., -4.}}), std::invalid_argument); // no tangent
+  EXPECT_THROW(square.sample(-2.5, 8, inner), std::invalid_argument); // the arcs would flip
+  EXPECT_THROW(Loop::circle(0., 0., 0.), std::invalid_argument);
 }
 
 // A stale default model (generator changed, file not regenerated) fails here.

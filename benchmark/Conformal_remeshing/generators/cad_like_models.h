@@ -20,6 +20,8 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <functional>
+#include <limits>
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -65,6 +67,7 @@ struct Cad_model_statistics
   std::size_t vertices = 0;
   std::size_t edges = 0;
   std::size_t faces = 0;
+  std::size_t components = 0;
   std::size_t boundary_loops = 0;
   long euler_characteristic = 0;
   long genus = 0;                      ///< (2 - chi - boundary loops) / 2: meaningful for one connected component
@@ -122,6 +125,10 @@ inline bool strictly_inside_interior_angle(const Planar_point& v, const Planar_p
 /// `holes` a hole clockwise (indices into `points`); `start` picks where the ear clipping
 /// begins (modulo the polygon size). Returns counterclockwise triangles.
 /// Throws `std::runtime_error` if the input is not a valid polygon with holes.
+///
+/// The ear test looks for blocking vertices in a uniform grid instead of walking the whole
+/// chain: same answers (the grid query is conservative and the exact tests are unchanged), but
+/// close to linear time on the large faces of the paper-scale models.
 class Fan_triangulator
 {
 public:
@@ -148,6 +155,13 @@ private:
   // appear twice).
   std::vector<std::size_t> vertex_, next_, prev_;
   std::size_t head_ = 0;
+  // During the ear clipping: which positions are still in the chain, the other positions of
+  // the same vertex (a cyclic list), and the positions bucketed by a grid over their points.
+  std::vector<char> alive_;
+  std::vector<std::size_t> twin_next_, twin_prev_;
+  double grid_x_ = 0., grid_y_ = 0., cell_ = 1.;
+  long columns_ = 1, rows_ = 1;
+  std::vector<std::size_t> cell_start_, cell_positions_;
 
   std::size_t push_position(std::size_t v)
   {
@@ -212,35 +226,43 @@ private:
       }
       return best;
     };
+    std::vector<std::size_t> rightmost_of(holes_.size());
+    for(std::size_t h = 0; h < holes_.size(); ++h)
+      rightmost_of[h] = rightmost(h);
     std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) {
-      return pts_[holes_[a][rightmost(a)]].x() > pts_[holes_[b][rightmost(b)]].x();
+      return pts_[holes_[a][rightmost_of[a]]].x() > pts_[holes_[b][rightmost_of[b]]].x();
     });
     std::vector<bool> bridged(holes_.size(), false);
 
     for(std::size_t h : order) {
       const std::vector<std::size_t>& hole = holes_[h];
-      const std::size_t n = hole.size(), k = rightmost(h);
+      const std::size_t n = hole.size(), k = rightmost_of[h];
       const std::size_t m = hole[k];
       const Planar_point& M = pts_[m];
       const Planar_point& hole_next = pts_[hole[(k + 1) % n]];
       const Planar_point& hole_prev = pts_[hole[(k + n - 1) % n]];
 
-      std::vector<std::size_t> candidates = chain();
-      std::vector<double> distance(vertex_.size(), 0.);
-      for(std::size_t p : candidates)
-        distance[p] = CGAL::squared_distance(M, at(p));
-      std::stable_sort(candidates.begin(), candidates.end(),
-                       [&](std::size_t a, std::size_t b) { return distance[a] < distance[b]; });
+      // Candidates by increasing distance, ties in chain order: a heap on (distance, rank)
+      // pops them in the order of a stable sort, without sorting the whole chain.
+      const std::vector<std::size_t> positions = chain();
+      std::vector<std::pair<double, std::size_t> > candidates(positions.size());
+      for(std::size_t i = 0; i < positions.size(); ++i)
+        candidates[i] = {CGAL::to_double(CGAL::squared_distance(M, at(positions[i]))), i};
+      const std::greater<std::pair<double, std::size_t> > farther;
+      std::make_heap(candidates.begin(), candidates.end(), farther);
 
       std::size_t chosen = vertex_.size();
-      for(std::size_t p : candidates) {
+      while(!candidates.empty()) {
+        std::pop_heap(candidates.begin(), candidates.end(), farther);
+        const std::size_t p = positions[candidates.back().second];
+        candidates.pop_back();
         if(vertex_[p] == m || at(p) == M)
           continue;
         if(!strictly_inside_interior_angle(at(p), at(next_[p]), at(prev_[p]), M) ||
            !strictly_inside_interior_angle(M, hole_next, hole_prev, at(p)))
           continue;
         bool visible = true;
-        for(std::size_t q : chain())
+        for(std::size_t q : positions)
           if(blocks(m, vertex_[p], vertex_[q], vertex_[next_[q]])) { visible = false; break; }
         for(std::size_t g = 0; visible && g < holes_.size(); ++g) {
           if(bridged[g])
@@ -274,6 +296,103 @@ private:
     }
   }
 
+  long column_of(double x) const { return std::min(columns_ - 1, std::max(0L, long(std::floor((x - grid_x_) / cell_)))); }
+  long row_of(double y) const { return std::min(rows_ - 1, std::max(0L, long(std::floor((y - grid_y_) / cell_)))); }
+
+  // Buckets the chain's positions by a grid of about two cells per position, and links the
+  // positions of each vertex.
+  void prepare_clipping(const std::vector<std::size_t>& positions)
+  {
+    alive_.assign(vertex_.size(), 0);
+    twin_next_.assign(vertex_.size(), 0);
+    twin_prev_.assign(vertex_.size(), 0);
+    std::vector<std::size_t> last_of_vertex(pts_.size(), vertex_.size());
+    double x_min = at(positions[0]).x(), x_max = x_min, y_min = at(positions[0]).y(), y_max = y_min;
+    for(std::size_t p : positions) {
+      alive_[p] = 1;
+      const std::size_t v = vertex_[p];
+      if(last_of_vertex[v] == vertex_.size())
+        twin_next_[p] = twin_prev_[p] = p;
+      else { // insert after the previous position of v
+        const std::size_t q = last_of_vertex[v];
+        twin_next_[p] = twin_next_[q];
+        twin_prev_[twin_next_[q]] = p;
+        twin_next_[q] = p;
+        twin_prev_[p] = q;
+      }
+      last_of_vertex[v] = p;
+      x_min = std::min(x_min, at(p).x());
+      x_max = std::max(x_max, at(p).x());
+      y_min = std::min(y_min, at(p).y());
+      y_max = std::max(y_max, at(p).y());
+    }
+    const double width = x_max - x_min, height = y_max - y_min, count = double(positions.size());
+    cell_ = std::max({std::sqrt(width * height / (2. * count)), std::max(width, height) / (2. * count),
+                      std::numeric_limits<double>::min()});
+    grid_x_ = x_min;
+    grid_y_ = y_min;
+    columns_ = long(width / cell_) + 1;
+    rows_ = long(height / cell_) + 1;
+    cell_start_.assign(std::size_t(columns_ * rows_) + 1, 0);
+    auto cell_of = [&](std::size_t p) { return std::size_t(row_of(at(p).y()) * columns_ + column_of(at(p).x())); };
+    for(std::size_t p : positions)
+      ++cell_start_[cell_of(p) + 1];
+    for(std::size_t c = 1; c < cell_start_.size(); ++c)
+      cell_start_[c] += cell_start_[c - 1];
+    cell_positions_.resize(positions.size());
+    std::vector<std::size_t> fill(cell_start_.begin(), cell_start_.end() - 1);
+    for(std::size_t p : positions)
+      cell_positions_[fill[cell_of(p)]++] = p;
+  }
+
+  void remove_position(std::size_t p)
+  {
+    alive_[p] = 0;
+    twin_next_[twin_prev_[p]] = twin_next_[p];
+    twin_prev_[twin_next_[p]] = twin_prev_[p];
+  }
+
+  // Calls `stop(position)` on every position bucketed in a cell that the closed triangle ABC
+  // may touch, until it returns true; returns whether it did. Each row's x-range is taken over
+  // the triangle's part in that row widened by one cell on every side, so rounding cannot miss
+  // a cell.
+  template <class Stop>
+  bool any_position_near(const Planar_point& A, const Planar_point& B, const Planar_point& C, Stop stop) const
+  {
+    const Planar_point* corner[3] = {&A, &B, &C};
+    const long first_row = row_of(std::min({A.y(), B.y(), C.y()}));
+    const long last_row = row_of(std::max({A.y(), B.y(), C.y()}));
+    for(long r = first_row; r <= last_row; ++r) {
+      const double low = grid_y_ + double(r - 1) * cell_, high = grid_y_ + double(r + 2) * cell_;
+      double x_low = std::numeric_limits<double>::infinity(), x_high = -x_low;
+      for(int e = 0; e < 3; ++e) {
+        const Planar_point &P = *corner[e], &Q = *corner[(e + 1) % 3];
+        if(std::max(P.y(), Q.y()) < low || std::min(P.y(), Q.y()) > high)
+          continue;
+        double t0 = 0., t1 = 1.;
+        if(P.y() != Q.y()) {
+          t0 = std::min(1., std::max(0., (low - P.y()) / (Q.y() - P.y())));
+          t1 = std::min(1., std::max(0., (high - P.y()) / (Q.y() - P.y())));
+        }
+        for(double t : {t0, t1}) {
+          const double x = P.x() + t * (Q.x() - P.x());
+          x_low = std::min(x_low, x);
+          x_high = std::max(x_high, x);
+        }
+      }
+      if(!(x_low <= x_high))
+        continue;
+      const long first_column = column_of(x_low - cell_), last_column = column_of(x_high + cell_);
+      for(long c = first_column; c <= last_column; ++c) {
+        const std::size_t cell = std::size_t(r * columns_ + c);
+        for(std::size_t i = cell_start_[cell]; i < cell_start_[cell + 1]; ++i)
+          if(stop(cell_positions_[i]))
+            return true;
+      }
+    }
+    return false;
+  }
+
   // Is the triangle (prev, p, next) an ear of the current chain?
   bool is_ear(std::size_t p) const
   {
@@ -291,33 +410,35 @@ private:
       return CGAL::orientation(X, Y, q) == CGAL::LEFT_TURN &&
              CGAL::orientation(X, q, Z) == CGAL::LEFT_TURN;
     };
-    std::size_t q = p;
-    do {
-      const std::size_t v = vertex_[q];
-      if(is_corner(v)) {
-        // Another occurrence of a corner (a bridge end) must not send an edge into the ear.
+    // Another occurrence of a corner (a bridge end) must not send an edge into the ear.
+    for(std::size_t start : {pa, p, pc}) {
+      std::size_t q = start;
+      do {
         for(std::size_t r : {prev_[q], next_[q]}) {
           const bool ear_edge = (q == pa && r == p) || (q == p && (r == pa || r == pc)) ||
                                 (q == pc && r == p);
-          if(!ear_edge && !is_corner(vertex_[r]) && enters(v, pts_[vertex_[r]]))
+          if(!ear_edge && !is_corner(vertex_[r]) && enters(vertex_[q], pts_[vertex_[r]]))
             return false;
         }
-      } else {
-        const Planar_point& Q = pts_[v];
-        if(CGAL::orientation(A, B, Q) != CGAL::RIGHT_TURN &&
-           CGAL::orientation(B, C, Q) != CGAL::RIGHT_TURN &&
-           CGAL::orientation(C, A, Q) != CGAL::RIGHT_TURN)
-          return false;
-      }
-      q = next_[q];
-    } while(q != p);
-    return true;
+        q = twin_next_[q];
+      } while(q != start);
+    }
+    // No other vertex in the closed triangle.
+    return !any_position_near(A, B, C, [&](std::size_t q) {
+      if(!alive_[q] || is_corner(vertex_[q]))
+        return false;
+      const Planar_point& Q = pts_[vertex_[q]];
+      return CGAL::orientation(A, B, Q) != CGAL::RIGHT_TURN &&
+             CGAL::orientation(B, C, Q) != CGAL::RIGHT_TURN &&
+             CGAL::orientation(C, A, Q) != CGAL::RIGHT_TURN;
+    });
   }
 
   std::vector<std::array<std::size_t, 3> > clip_ears(std::size_t start)
   {
     std::vector<std::array<std::size_t, 3> > triangles;
     std::vector<std::size_t> positions = chain();
+    prepare_clipping(positions);
     std::size_t count = positions.size();
     std::size_t p = positions[start % count];
     std::size_t failures = 0;
@@ -327,6 +448,7 @@ private:
         const std::size_t c = next_[p];
         next_[prev_[p]] = c;
         prev_[c] = prev_[p];
+        remove_position(p);
         --count;
         p = c; // the next ear shares the previous corner: fans, as CAD exporters make
         failures = 0;
@@ -435,18 +557,10 @@ inline std::vector<Circular_hole> perforated_plate_holes(const Perforated_plate_
   return holes;
 }
 
-/// Builds a closed, outward-oriented triangle mesh of a plate with rounded vertical edges and
-/// circular through-holes (genus = number of holes), tessellated as CAD exporters do:
-/// - top and bottom faces triangulated from their boundary vertices only (bridged ear clipping
-///   in fans), so they are full of long slivers;
-/// - hole walls and fillets as strips, one quad (two triangles) per circle segment spanning the
-///   whole thickness;
-/// - straight sides as one long rectangle (two triangles) each.
-///
-/// `mesh` is cleared first. The result depends only on `p` (no time, no unordered containers).
-/// Throws like `perforated_plate_holes()`, and `std::runtime_error` if the triangulation fails.
-/// The planar outline of a perforated plate: the outer loop counterclockwise, then each hole
-/// clockwise, so that the material is on the left of every boundary edge.
+/// A planar polygon with holes given by its boundary vertices: the outer loop counterclockwise,
+/// then each hole clockwise, so that the material is on the left of every boundary edge
+/// (indices into `points`). The outline of a perforated plate, and of every face and level of
+/// the paper-scale models (`paper_models.h`).
 struct Plate_outline
 {
   std::vector<internal::Planar_point> points;
@@ -497,49 +611,124 @@ inline Plate_outline perforated_plate_outline(const Perforated_plate_parameters&
   return outline;
 }
 
+namespace internal {
+
+// Adds the triangle abc; a refusal (non-manifold) is a bug of the generator.
+template <class Point_3>
+void add_triangle(CGAL::Surface_mesh<Point_3>& mesh, typename CGAL::Surface_mesh<Point_3>::Vertex_index a,
+                  typename CGAL::Surface_mesh<Point_3>::Vertex_index b,
+                  typename CGAL::Surface_mesh<Point_3>::Vertex_index c)
+{
+  if(mesh.add_face(a, b, c) == CGAL::Surface_mesh<Point_3>::null_face())
+    throw std::runtime_error("CAD-like model: non-manifold triangle (internal error)");
+}
+
+// Triangulates the planar face bounded by `outline` with fans from its boundary vertices
+// (`Fan_triangulator`, ear clipping from `start`); `vertex[i]` is the mesh vertex of
+// `outline.points[i]`. The triangles are counterclockwise in the outline's plane, clockwise
+// when `reversed` (a face seen from its other side).
+template <class Point_3>
+void add_fan_face(CGAL::Surface_mesh<Point_3>& mesh, const Plate_outline& outline,
+                  const std::vector<typename CGAL::Surface_mesh<Point_3>::Vertex_index>& vertex,
+                  std::size_t start, bool reversed)
+{
+  for(const std::array<std::size_t, 3>& t : Fan_triangulator(outline.points, outline.outer, outline.hole_loops).run(start)) {
+    if(reversed)
+      add_triangle(mesh, vertex[t[2]], vertex[t[1]], vertex[t[0]]);
+    else
+      add_triangle(mesh, vertex[t[0]], vertex[t[1]], vertex[t[2]]);
+  }
+}
+
+// One quad, two triangles, of a strip joining two copies of a boundary edge i -> j (material on
+// its left): it faces away from the material when the `upper` copy is on the side of the face
+// that the edge bounds counterclockwise.
+template <class Point_3>
+void add_strip_quad(CGAL::Surface_mesh<Point_3>& mesh, typename CGAL::Surface_mesh<Point_3>::Vertex_index upper_i,
+                    typename CGAL::Surface_mesh<Point_3>::Vertex_index upper_j,
+                    typename CGAL::Surface_mesh<Point_3>::Vertex_index lower_i,
+                    typename CGAL::Surface_mesh<Point_3>::Vertex_index lower_j)
+{
+  add_triangle(mesh, lower_i, lower_j, upper_j);
+  add_triangle(mesh, lower_i, upper_j, upper_i);
+}
+
+// Joins two copies of a boundary loop (point indices, material on the left) by one quad per
+// edge, as CAD exporters tessellate walls and fillets; `upper[i]` and `lower[i]` are the
+// vertices of point i in each copy (see add_strip_quad()).
+template <class Point_3>
+void add_strip(CGAL::Surface_mesh<Point_3>& mesh, const std::vector<std::size_t>& loop,
+               const std::vector<typename CGAL::Surface_mesh<Point_3>::Vertex_index>& upper,
+               const std::vector<typename CGAL::Surface_mesh<Point_3>::Vertex_index>& lower)
+{
+  for(std::size_t k = 0; k < loop.size(); ++k) {
+    const std::size_t i = loop[k], j = loop[(k + 1) % loop.size()];
+    add_strip_quad(mesh, upper[i], upper[j], lower[i], lower[j]);
+  }
+}
+
+} // namespace internal
+
+/// Adds to `mesh` a part swept by a planar outline through levels, top to bottom: level k is
+/// `levels[k]` (every level has the same loops with the same numbers of points, e.g. one
+/// outline moved into the material for fillets) at height `heights[k]`, placed in space by
+/// `place(x, y, height)`. Each loop's copies in consecutive levels are joined by strips (walls,
+/// fillets); the first level is closed by a face triangulated in fans when `cap_first`, the
+/// last one, seen from below, when `cap_last`. With both caps and `place` the identity, the
+/// part is closed and outward oriented, of genus the number of holes; with one cap, an open
+/// surface of genus 0 with one boundary loop per loop of the outline.
+///
+/// Vertices are added level by level; faces are the first cap, the last cap, then the strips
+/// loop by loop, band by band. Throws `std::runtime_error` if a triangulation fails.
+template <class Point_3, class Place>
+void add_layered_part(CGAL::Surface_mesh<Point_3>& mesh, const std::vector<Plate_outline>& levels,
+                      const std::vector<double>& heights, bool cap_first, bool cap_last, Place place)
+{
+  typedef typename CGAL::Surface_mesh<Point_3>::Vertex_index Vertex_index;
+  if(levels.empty() || levels.size() != heights.size())
+    throw std::invalid_argument("layered part: need one height per level, and at least one level");
+  for(const Plate_outline& level : levels)
+    if(level.points.size() != levels[0].points.size() || level.hole_loops.size() != levels[0].hole_loops.size())
+      throw std::invalid_argument("layered part: the levels must have the same loops");
+
+  std::vector<std::vector<Vertex_index> > vertex(levels.size());
+  for(std::size_t k = 0; k < levels.size(); ++k)
+    for(const internal::Planar_point& q : levels[k].points)
+      vertex[k].push_back(mesh.add_vertex(place(q.x(), q.y(), heights[k])));
+
+  // CAD exporters triangulate each face on its own: the last one starts its fans elsewhere.
+  if(cap_first)
+    internal::add_fan_face(mesh, levels.front(), vertex.front(), 0, false);
+  if(cap_last)
+    internal::add_fan_face(mesh, levels.back(), vertex.back(), levels.back().points.size() / 2, true);
+
+  const Plate_outline& outline = levels[0];
+  auto add_walls = [&](const std::vector<std::size_t>& loop) {
+    for(std::size_t k = 0; k + 1 < levels.size(); ++k)
+      internal::add_strip(mesh, loop, vertex[k], vertex[k + 1]);
+  };
+  add_walls(outline.outer);
+  for(const std::vector<std::size_t>& loop : outline.hole_loops)
+    add_walls(loop);
+}
+
+/// Builds a closed, outward-oriented triangle mesh of a plate with rounded vertical edges and
+/// circular through-holes (genus = number of holes), tessellated as CAD exporters do:
+/// - top and bottom faces triangulated from their boundary vertices only (bridged ear clipping
+///   in fans), so they are full of long slivers;
+/// - hole walls and fillets as strips, one quad (two triangles) per circle segment spanning the
+///   whole thickness;
+/// - straight sides as one long rectangle (two triangles) each.
+///
+/// `mesh` is cleared first. The result depends only on `p` (no time, no unordered containers).
+/// Throws like `perforated_plate_holes()`, and `std::runtime_error` if the triangulation fails.
 template <class Point_3>
 void make_perforated_plate(CGAL::Surface_mesh<Point_3>& mesh, const Perforated_plate_parameters& p)
 {
   const Plate_outline outline = perforated_plate_outline(p);
-  const std::vector<internal::Planar_point>& points = outline.points;
-  const std::vector<std::size_t>& outer = outline.outer;
-  const std::vector<std::vector<std::size_t> >& hole_loops = outline.hole_loops;
-  typedef internal::Planar_point Planar_point;
-
-  // CAD exporters triangulate each face on its own: the bottom starts its fans elsewhere.
-  const std::vector<std::array<std::size_t, 3> > top =
-    internal::Fan_triangulator(points, outer, hole_loops).run(0);
-  const std::vector<std::array<std::size_t, 3> > bottom =
-    internal::Fan_triangulator(points, outer, hole_loops).run(points.size() / 2);
-
   mesh.clear();
-  typedef typename CGAL::Surface_mesh<Point_3>::Vertex_index Vertex_index;
-  std::vector<Vertex_index> top_vertex, bottom_vertex;
-  for(const Planar_point& q : points)
-    top_vertex.push_back(mesh.add_vertex(Point_3(q.x(), q.y(), p.thickness)));
-  for(const Planar_point& q : points)
-    bottom_vertex.push_back(mesh.add_vertex(Point_3(q.x(), q.y(), 0.)));
-
-  auto add_triangle = [&](Vertex_index a, Vertex_index b, Vertex_index c) {
-    if(mesh.add_face(a, b, c) == CGAL::Surface_mesh<Point_3>::null_face())
-      throw std::runtime_error("make_perforated_plate: non-manifold triangle (internal error)");
-  };
-  for(const std::array<std::size_t, 3>& t : top)
-    add_triangle(top_vertex[t[0]], top_vertex[t[1]], top_vertex[t[2]]);
-  for(const std::array<std::size_t, 3>& t : bottom) // seen from below: reversed
-    add_triangle(bottom_vertex[t[2]], bottom_vertex[t[1]], bottom_vertex[t[0]]);
-
-  // Walls: for a boundary edge i -> j with material on its left, the outside is on its right.
-  auto add_wall = [&](const std::vector<std::size_t>& loop) {
-    for(std::size_t k = 0; k < loop.size(); ++k) {
-      const std::size_t i = loop[k], j = loop[(k + 1) % loop.size()];
-      add_triangle(bottom_vertex[i], bottom_vertex[j], top_vertex[j]);
-      add_triangle(bottom_vertex[i], top_vertex[j], top_vertex[i]);
-    }
-  };
-  add_wall(outer);
-  for(const std::vector<std::size_t>& loop : hole_loops)
-    add_wall(loop);
+  add_layered_part(mesh, std::vector<Plate_outline>(2, outline), {p.thickness, 0.}, true, true,
+                   [](double x, double y, double z) { return Point_3(x, y, z); });
 }
 
 /// Builds the top face of the plate of `p` alone: an open sheet of genus 0 with one boundary
@@ -550,17 +739,10 @@ template <class Point_3>
 void make_perforated_sheet(CGAL::Surface_mesh<Point_3>& mesh, const Perforated_plate_parameters& p, double bend = 0.)
 {
   const Plate_outline outline = perforated_plate_outline(p);
-  const std::vector<std::array<std::size_t, 3> > triangles =
-    internal::Fan_triangulator(outline.points, outline.outer, outline.hole_loops).run(0);
-  mesh.clear();
-  typedef typename CGAL::Surface_mesh<Point_3>::Vertex_index Vertex_index;
-  std::vector<Vertex_index> vertex;
   const double half = p.length / 2.;
-  for(const internal::Planar_point& q : outline.points)
-    vertex.push_back(mesh.add_vertex(Point_3(q.x(), q.y(), bend * q.x() * q.x() / half)));
-  for(const std::array<std::size_t, 3>& t : triangles)
-    if(mesh.add_face(vertex[t[0]], vertex[t[1]], vertex[t[2]]) == CGAL::Surface_mesh<Point_3>::null_face())
-      throw std::runtime_error("make_perforated_sheet: non-manifold triangle (internal error)");
+  mesh.clear();
+  add_layered_part(mesh, std::vector<Plate_outline>(1, outline), {0.}, true, false,
+                   [&](double x, double y, double) { return Point_3(x, y, bend * x * x / half); });
 }
 
 /// Builds an open flat disc (one boundary loop, genus 0) of radius `radius` in the plane z = 0,
@@ -594,6 +776,7 @@ Cad_model_statistics cad_model_statistics(const CGAL::Surface_mesh<Point_3>& mes
   s.vertices = mesh.number_of_vertices();
   s.edges = mesh.number_of_edges();
   s.faces = mesh.number_of_faces();
+  s.components = checks.components.size();
   for(const Component_topology& c : checks.components)
   {
     s.boundary_loops += c.boundary_loops;
