@@ -2,6 +2,7 @@
 
 #include <CGAL/Conformal_remeshing/IO/read_mesh.h>
 #include <CGAL/Conformal_remeshing/check_mesh.h>
+#include <CGAL/Conformal_remeshing/mesh_quality.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
@@ -11,7 +12,10 @@
 
 #include <gtest/gtest.h>
 
+#include <chrono>
+#include <cstdint>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -361,4 +365,235 @@ TEST(Readers, UnreadableFilesNameTheFileAndTheReason)
     write_text(dir / g.first, g.second);
     expect_read_error(dir / g.first, CR::Error_code::FILE_NOT_READABLE, "not a valid");
   }
+}
+
+// --- hostile inputs (issue #8) ---------------------------------------------------------------
+// Every crafted file of data/hostile has a defined outcome: an Error naming the file and the
+// reason, or a report of its defects and topology (with a mesh when the soup is one).
+
+namespace {
+
+std::filesystem::path hostile(const std::string& name)
+{
+  return std::filesystem::path(CONFORMAL_REMESHING_TEST_DATA) / "hostile" / name;
+}
+
+// Reads a hostile file that holds a polygon soup, and checks that the reader's report and
+// check_mesh() on the mesh it built agree.
+CR::Mesh_check_report read_hostile(const std::string& name, Mesh& mesh)
+{
+  const CR::Mesh_check_report r = CR::read_and_check_mesh(hostile(name).string(), mesh);
+  if(r.topology_available)
+  {
+    const CR::Mesh_check_report again = CR::check_mesh(mesh);
+    EXPECT_EQ(again.summary(), r.summary()) << name;
+    EXPECT_EQ(again.components.size(), r.components.size()) << name;
+    EXPECT_EQ(again.total_genus(), r.total_genus()) << name;
+    EXPECT_EQ(again.total_boundary_loops(), r.total_boundary_loops()) << name;
+  }
+  else
+    EXPECT_EQ(mesh.number_of_faces(), 0u) << name;
+  return r;
+}
+
+} // namespace
+
+TEST(HostileInputs, TruncatedAndGarbageFilesOfEveryFormat)
+{
+  for(const char* name : {"truncated_binary.off", "truncated.obj", "truncated_ascii.ply", "truncated_binary.ply",
+                          "truncated_binary.stl", "garbage.obj", "garbage.stl", "garbage_binary.ply"})
+    expect_read_error(hostile(name), CR::Error_code::FILE_NOT_READABLE, "not a valid");
+  // A face cut short is named.
+  expect_read_error(hostile("truncated.obj"), CR::Error_code::FILE_NOT_READABLE, "face 2 has fewer than 3 vertices");
+}
+
+TEST(HostileInputs, CountsTheFileCannotHoldAreRefusedAtOnce)
+{
+  // Each of these made CGAL 5.5's readers ask for gigabytes, read billions of records past the
+  // end of the file, or convert a negative number to an index (found by fuzz/fuzz_read_mesh).
+  for(const char* name : {"huge_counts.off", "huge_face.off", "huge_face_binary.off", "negative_index.off",
+                          "huge_count.ply", "huge_list.ply", "property_before_element.ply"})
+  {
+    const auto start = std::chrono::steady_clock::now();
+    expect_read_error(hostile(name), CR::Error_code::FILE_NOT_READABLE, "not a valid");
+    EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(), 2.) << name;
+  }
+}
+
+TEST(HostileInputs, NonFiniteCoordinates)
+{
+  // OFF, PLY (ASCII and binary) and binary STL readers keep NaN and infinity for the checks ...
+  for(const char* name : {"nan.off", "nan_ascii.ply", "nan_binary.ply"})
+  {
+    Mesh mesh;
+    const CR::Mesh_check_report r = read_hostile(name, mesh);
+    expect_only(r, CR::Mesh_defect::NON_FINITE_COORDINATES, 1);
+    EXPECT_NE(r.summary().find("vertex 2 at (0, nan, 0)"), std::string::npos) << name << ": " << r.summary();
+  }
+  // ... while CGAL's OBJ and ASCII STL readers refuse the spellings "nan" and "inf".
+  expect_read_error(hostile("nan.obj"), CR::Error_code::FILE_NOT_READABLE, "not a valid OBJ file");
+  expect_read_error(hostile("inf_ascii.stl"), CR::Error_code::FILE_NOT_READABLE, "not a valid STL file");
+}
+
+TEST(HostileInputs, ZeroAreaAndCollinearFaces)
+{
+  Mesh mesh;
+  // Collinear by exact predicates at coordinates around 1e6, where a floating-point orientation
+  // test would be at the mercy of rounding.
+  CR::Mesh_check_report r = read_hostile("collinear_face_1e6.off", mesh);
+  expect_only(r, CR::Mesh_defect::DEGENERATE_FACE, 1);
+  EXPECT_TRUE(r.topology_available);
+
+  // 1e-9 off the line over a length of 2e6: a sliver, not a degenerate face, and measurable.
+  r = read_hostile("near_collinear_face.off", mesh);
+  EXPECT_TRUE(r.is_valid()) << r.summary();
+  const CR::Mesh_quality_report q = CR::mesh_quality(mesh);
+  EXPECT_GT(q.minimum_angle.min, 0.);
+  EXPECT_LT(q.minimum_angle.min, 1e-9);
+  EXPECT_EQ(q.number_of_degenerate_faces, 0u);
+
+  // A face through one vertex twice is one degenerate face, and nothing else.
+  r = read_hostile("repeated_index_face.off", mesh);
+  expect_only(r, CR::Mesh_defect::DEGENERATE_FACE, 1);
+  EXPECT_NE(r.summary().find("repeats a vertex"), std::string::npos) << r.summary();
+  EXPECT_FALSE(r.topology_available);
+}
+
+TEST(HostileInputs, NearDuplicatedVerticesAreDistinct)
+{
+  // Only exactly equal positions are duplicates; corners 1e-12 apart leave a crack, which the
+  // topology shows: two triangles, two components, two boundary loops.
+  Mesh mesh;
+  const CR::Mesh_check_report r = read_hostile("near_duplicated_vertices.off", mesh);
+  EXPECT_TRUE(r.is_valid()) << r.summary();
+  ASSERT_EQ(r.components.size(), 2u);
+  EXPECT_EQ(r.total_boundary_loops(), 2u);
+  EXPECT_EQ(mesh.number_of_vertices(), 6u);
+}
+
+TEST(HostileInputs, CoordinatesFrom1eMinus6To1e6)
+{
+  // A unit-shaped tetrahedron scaled to 1e-6 at 1e6 from the origin, and scaled to 1e6: valid,
+  // and the same angles as the unit tetrahedron (90, 45, 45 and 60 degrees).
+  for(const char* name : {"tiny_far_tetrahedron.off", "huge_tetrahedron.off"})
+  {
+    Mesh mesh;
+    const CR::Mesh_check_report r = read_hostile(name, mesh);
+    EXPECT_TRUE(r.is_valid()) << name << ": " << r.summary();
+    EXPECT_EQ(r.total_genus(), 0) << name;
+    const CR::Mesh_quality_report q = CR::mesh_quality(mesh);
+    EXPECT_NEAR(q.minimum_angle.min, 45., 0.01) << name;
+    EXPECT_NEAR(q.maximum_angle.max, 90., 0.01) << name;
+  }
+}
+
+TEST(HostileInputs, SmallestBoundaries)
+{
+  // A single triangle, and a tetrahedron missing one face: boundary loops of 3 edges.
+  Mesh mesh;
+  CR::Mesh_check_report r = CR::read_and_check_mesh(std::string(CONFORMAL_REMESHING_TEST_DATA) + "/single_triangle.off", mesh);
+  EXPECT_TRUE(r.is_valid()) << r.summary();
+  ASSERT_EQ(r.components.size(), 1u);
+  EXPECT_EQ(r.components[0].boundary_loops, 1u);
+  EXPECT_EQ(r.components[0].edges, 3u);
+  EXPECT_EQ(r.components[0].euler_characteristic, 1);
+  EXPECT_EQ(r.components[0].genus, 0);
+
+  r = read_hostile("open_tetrahedron.off", mesh);
+  EXPECT_TRUE(r.is_valid()) << r.summary();
+  ASSERT_EQ(r.components.size(), 1u);
+  EXPECT_EQ(r.components[0].boundary_loops, 1u);
+  EXPECT_EQ(r.components[0].edges, 6u);
+  EXPECT_EQ(r.components[0].genus, 0);
+}
+
+TEST(HostileInputs, PolygonsAreReportedAsNonTriangleFaces)
+{
+  // Quads and polygons are read and reported; the remesher refuses them (it needs triangles).
+  Mesh mesh;
+  CR::Mesh_check_report r = read_hostile("pentagon.obj", mesh);
+  expect_only(r, CR::Mesh_defect::NON_TRIANGLE_FACE, 1);
+  EXPECT_NE(r.summary().find("face 0 has 5 vertices"), std::string::npos) << r.summary();
+  r = read_hostile("quad_and_triangle.ply", mesh);
+  expect_only(r, CR::Mesh_defect::NON_TRIANGLE_FACE, 1);
+  EXPECT_EQ(mesh.number_of_faces(), 2u);
+}
+
+TEST(HostileInputs, OffVariantsAndBinaryOff)
+{
+  // The header prefixes of OFF: colours and normals after the coordinates, homogeneous
+  // coordinates, comments, counts on the keyword's line, and big-endian binary OFF.
+  const std::filesystem::path dir = scratch_dir();
+  const std::vector<std::pair<std::string, std::string> > variants = {
+    {"colors.off", "COFF\n# comment\n4 4 0\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n0 1 0 0 0 255 255\n0 0 1 9 9 9 255\n"
+                   "3 0 2 1 255 0 0\n3 0 1 3\n3 1 2 3\n3 0 3 2 # last face\n"},
+    {"normals.off", "NOFF 4 4 6\n0 0 0 -1 -1 -1\n1 0 0 1 0 0\n0 1 0 0 1 0\n0 0 1 0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n"},
+    {"homogeneous.off", "4OFF\n4 4 0\n0 0 0 2\n2 0 0 2\n0 1 0 1\n0 0 3 3\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n"},
+    {"dimension.off", "nOFF\n3\n4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n"}};
+  for(const auto& v : variants)
+  {
+    write_text(dir / v.first, v.second);
+    Mesh mesh;
+    const CR::Mesh_check_report r = CR::read_and_check_mesh((dir / v.first).string(), mesh);
+    EXPECT_TRUE(r.is_valid()) << v.first << ": " << r.summary();
+    ASSERT_EQ(mesh.number_of_vertices(), 4u) << v.first;
+    EXPECT_EQ(mesh.point(Mesh::Vertex_index(3)), Point(0, 0, 1)) << v.first;
+  }
+  // Binary OFF, as Geomview defines it: big-endian int32 counts and float32 coordinates, and
+  // each face followed by its number of colour components (here 0).
+  std::string binary = "OFF BINARY\n";
+  auto put32 = [&](std::uint32_t x) {
+    for(int shift = 24; shift >= 0; shift -= 8)
+      binary += char((x >> shift) & 0xff);
+  };
+  auto put_float = [&](float f) {
+    std::uint32_t bits;
+    std::memcpy(&bits, &f, 4);
+    put32(bits);
+  };
+  put32(4); put32(4); put32(0);
+  for(const Point& p : tetrahedron_points())
+  {
+    put_float(float(p.x())); put_float(float(p.y())); put_float(float(p.z()));
+  }
+  for(const auto& f : tetrahedron_faces())
+  {
+    put32(3);
+    for(std::size_t v : f)
+      put32(std::uint32_t(v));
+    put32(0);
+  }
+  write_text(dir / "binary.off", binary);
+  Mesh mesh;
+  const CR::Mesh_check_report r = CR::read_and_check_mesh((dir / "binary.off").string(), mesh);
+  EXPECT_TRUE(r.is_valid()) << r.summary();
+  EXPECT_EQ(mesh.number_of_faces(), 4u);
+  // Cut one byte short, it is refused.
+  write_text(dir / "binary_cut.off", binary.substr(0, binary.size() - 1));
+  expect_read_error(dir / "binary_cut.off", CR::Error_code::FILE_NOT_READABLE, "not a valid OFF file");
+}
+
+TEST(HostileInputs, PlyWithOtherElementsAndTypes)
+{
+  // Faces before vertices, an extra element, double and short properties, big-endian lists.
+  const std::filesystem::path dir = scratch_dir();
+  write_text(dir / "reordered.ply",
+             "ply\nformat ascii 1.0\ncomment faces first\nelement face 4\nproperty list uchar uint vertex_index\n"
+             "element material 1\nproperty uchar red\nproperty list uchar float weights\n"
+             "element vertex 4\nproperty short x\nproperty double y\nproperty float z\nproperty uchar alpha\nend_header\n"
+             "3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n255 2 0.5 0.5\n0 0 0 1\n1 0 0 1\n0 1 0 1\n0 0 1 1\n");
+  Mesh mesh;
+  CR::Mesh_check_report r = CR::read_and_check_mesh((dir / "reordered.ply").string(), mesh);
+  EXPECT_TRUE(r.is_valid()) << r.summary();
+  EXPECT_EQ(mesh.number_of_faces(), 4u);
+
+  // A face index beyond the vertices, or a fractional index, is refused.
+  write_text(dir / "bad_index.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                    "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n"
+                                    "0 0 0\n1 0 0\n0 1 0\n3 0 1 3\n");
+  expect_read_error(dir / "bad_index.ply", CR::Error_code::FILE_NOT_READABLE, "not a valid PLY file");
+  write_text(dir / "fraction.ply", "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                   "property float z\nelement face 1\nproperty list uchar float vertex_indices\nend_header\n"
+                                   "0 0 0\n1 0 0\n0 1 0\n3 0 1 1.5\n");
+  expect_read_error(dir / "fraction.ply", CR::Error_code::FILE_NOT_READABLE, "not a valid PLY file");
 }

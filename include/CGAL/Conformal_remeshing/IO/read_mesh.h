@@ -19,13 +19,19 @@
 #include <algorithm>
 #include <array>
 #include <cctype>
+#include <cerrno>
+#include <charconv>
 #include <cmath>
 #include <cstdint>
-#include <map>
-#include <cerrno>
 #include <cstring>
 #include <fstream>
+#include <iterator>
+#include <limits>
+#include <map>
 #include <string>
+#include <string_view>
+#include <system_error>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -89,6 +95,431 @@ bool read_binary_STL(const std::string& filename, std::vector<Point>& points,
   return true;
 }
 
+// --- OFF and PLY ------------------------------------------------------------------------------
+// CGAL 5.5's OFF and PLY readers size their arrays from counts found in the file before reading
+// the data (a file of 200 bytes can ask for gigabytes, or loop for billions of records after
+// its end), cast negative or huge numbers to std::size_t (undefined behaviour), and the PLY
+// reader writes through `m_elements.back()` of an empty vector when a property comes before
+// any element. The readers below parse the same formats strictly, from the bytes of the whole
+// file: every count is checked against the bytes left before anything is allocated, every
+// number is range-checked before it is converted, and any violation makes the read fail.
+
+inline bool read_file_bytes(const std::string& filename, std::string& bytes)
+{
+  std::ifstream in(filename, std::ios::binary);
+  if(!in)
+    return false;
+  bytes.assign(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+  return !in.bad();
+}
+
+inline bool is_blank(char c) { return c == ' ' || c == '\t' || c == '\r' || c == '\v' || c == '\f'; }
+
+// The lines of a text, from a byte position on, cut into whitespace-separated tokens;
+// everything from `comment` to the end of a line is ignored, and so are lines with no token.
+class Token_lines
+{
+public:
+  Token_lines(const std::string& text, std::size_t position, char comment)
+    : text_(text), position_(position), comment_(comment)
+  {}
+
+  bool next(std::vector<std::string_view>& tokens)
+  {
+    tokens.clear();
+    while(tokens.empty() && position_ < text_.size())
+    {
+      std::size_t end = text_.find('\n', position_);
+      if(end == std::string::npos)
+        end = text_.size();
+      std::string_view line(text_.data() + position_, end - position_);
+      position_ = (std::min)(end + 1, text_.size());
+      if(comment_ != '\0')
+        line = line.substr(0, line.find(comment_));
+      std::size_t i = 0;
+      while(i < line.size())
+      {
+        while(i < line.size() && is_blank(line[i]))
+          ++i;
+        const std::size_t start = i;
+        while(i < line.size() && !is_blank(line[i]))
+          ++i;
+        if(i > start)
+          tokens.push_back(line.substr(start, i - start));
+      }
+    }
+    return !tokens.empty();
+  }
+
+  std::size_t position() const { return position_; }
+
+private:
+  const std::string& text_;
+  std::size_t position_;
+  char comment_;
+};
+
+// A decimal number, locale-independent, "nan" and "inf" included; false unless the whole
+// token is a number in the range of double.
+inline bool parse_double(std::string_view token, double& x)
+{
+  if(!token.empty() && token[0] == '+')
+    token.remove_prefix(1);
+  const auto result = std::from_chars(token.data(), token.data() + token.size(), x);
+  return !token.empty() && result.ec == std::errc() && result.ptr == token.data() + token.size();
+}
+
+// A count or an index: decimal digits only, below 10^18 (so no overflow).
+inline bool parse_count(std::string_view token, std::size_t& n)
+{
+  if(token.empty() || token.size() > 18)
+    return false;
+  n = 0;
+  for(char c : token)
+  {
+    if(c < '0' || c > '9')
+      return false;
+    n = 10 * n + std::size_t(c - '0');
+  }
+  return true;
+}
+
+// Big- or little-endian unsigned integer of `size` bytes at `p`.
+inline std::uint64_t load_unsigned(const char* p, std::size_t size, bool big_endian)
+{
+  std::uint64_t v = 0;
+  for(std::size_t i = 0; i < size; ++i)
+  {
+    const std::uint64_t byte = static_cast<unsigned char>(p[big_endian ? i : size - 1 - i]);
+    v = (v << 8) | byte;
+  }
+  return v;
+}
+
+inline double load_float32(const char* p, bool big_endian)
+{
+  const std::uint32_t bits = static_cast<std::uint32_t>(load_unsigned(p, 4, big_endian));
+  float f;
+  std::memcpy(&f, &bits, sizeof(float));
+  return f;
+}
+
+// Every vertex and every face of an OFF or PLY file takes at least this many bytes, whatever
+// the encoding: counts above what the file can hold are refused before any allocation.
+constexpr std::size_t minimum_record_bytes = 4;
+
+// OFF: the header keyword [ST][C][N][4][n]OFF, optionally followed by BINARY, then the numbers
+// of vertices, faces and edges. ASCII files hold a vertex per line (x y z [w], then normals,
+// colors or texture coordinates, which are ignored) and a face per line (n, n vertex indices,
+// then an optional color). Binary files (big-endian, Geomview's layout) hold float32 vertices
+// and int32 faces, each followed by its number of color components and these components.
+template <typename Point>
+bool read_OFF(const std::string& text, std::vector<Point>& points, std::vector<std::vector<std::size_t> >& polygons)
+{
+  Token_lines lines(text, 0, '#');
+  std::vector<std::string_view> tokens;
+  if(!lines.next(tokens))
+    return false;
+  std::string_view keyword = tokens[0];
+  auto take_prefix = [&](std::string_view prefix) {
+    const bool found = keyword.substr(0, prefix.size()) == prefix;
+    if(found)
+      keyword.remove_prefix(prefix.size());
+    return found;
+  };
+  const bool textures = take_prefix("ST");
+  const bool colors = take_prefix("C");
+  const bool normals = take_prefix("N");
+  const bool homogeneous = take_prefix("4");
+  const bool dimensional = take_prefix("n");
+  if(keyword != "OFF")
+    return false;
+  const bool binary = tokens.size() > 1 && tokens[1] == "BINARY";
+  if(binary && tokens.size() > 2)
+    return false;
+
+  std::size_t nv = 0, nf = 0;
+  if(binary)
+  {
+    // Only plain binary OFF: the optional per-vertex data of the prefixes has no fixed layout.
+    if(textures || colors || normals || homogeneous || dimensional)
+      return false;
+    std::size_t at = lines.position();
+    auto remaining = [&]() { return text.size() - at; };
+    auto read_int32 = [&](std::int64_t& value) {
+      if(remaining() < 4)
+        return false;
+      value = static_cast<std::int32_t>(static_cast<std::uint32_t>(load_unsigned(text.data() + at, 4, true)));
+      at += 4;
+      return true;
+    };
+    std::int64_t v = 0, f = 0, e = 0;
+    if(!read_int32(v) || !read_int32(f) || !read_int32(e) || v < 0 || f < 0
+       || std::size_t(v) > remaining() / 12 || std::size_t(f) > remaining() / 16)
+      return false;
+    nv = std::size_t(v);
+    nf = std::size_t(f);
+    points.reserve(nv);
+    for(std::size_t i = 0; i < nv; ++i, at += 12)
+      points.push_back(Point(load_float32(text.data() + at, true), load_float32(text.data() + at + 4, true),
+                             load_float32(text.data() + at + 8, true)));
+    polygons.reserve(nf);
+    for(std::size_t i = 0; i < nf; ++i)
+    {
+      std::int64_t n = 0, index = 0, nb_colors = 0;
+      if(!read_int32(n) || n < 0 || std::size_t(n) > remaining() / 4)
+        return false;
+      polygons.emplace_back();
+      polygons.back().reserve(std::size_t(n));
+      for(std::int64_t k = 0; k < n; ++k)
+      {
+        if(!read_int32(index) || index < 0 || std::size_t(index) >= nv)
+          return false;
+        polygons.back().push_back(std::size_t(index));
+      }
+      if(!read_int32(nb_colors) || nb_colors < 0 || nb_colors > 4 || remaining() < 4 * std::size_t(nb_colors))
+        return false;
+      at += 4 * std::size_t(nb_colors);
+    }
+    return true;
+  }
+
+  // The counts may follow the keyword on its line or come on the next lines.
+  std::vector<std::string_view> header(tokens.begin() + 1, tokens.end());
+  const std::size_t nb_header_numbers = dimensional ? 4 : 3;
+  while(header.size() < nb_header_numbers && lines.next(tokens))
+    header.insert(header.end(), tokens.begin(), tokens.end());
+  std::size_t dimension = 3, ne = 0;
+  if(header.size() != nb_header_numbers || (dimensional && (!parse_count(header[0], dimension) || dimension != 3))
+     || !parse_count(header[nb_header_numbers - 3], nv) || !parse_count(header[nb_header_numbers - 2], nf)
+     || !parse_count(header[nb_header_numbers - 1], ne))
+    return false;
+  const std::size_t rest = text.size() - lines.position();
+  if(nv > rest / minimum_record_bytes || nf > rest / minimum_record_bytes)
+    return false;
+
+  points.reserve(nv);
+  for(std::size_t i = 0; i < nv; ++i)
+  {
+    double xyzw[4] = {0., 0., 0., 1.};
+    const std::size_t needed = homogeneous ? 4 : 3;
+    if(!lines.next(tokens) || tokens.size() < needed)
+      return false;
+    for(std::size_t k = 0; k < needed; ++k)
+      if(!parse_double(tokens[k], xyzw[k]))
+        return false;
+    // w = 0 gives non-finite coordinates, which the input checks report.
+    points.push_back(Point(xyzw[0] / xyzw[3], xyzw[1] / xyzw[3], xyzw[2] / xyzw[3]));
+  }
+  polygons.reserve(nf);
+  for(std::size_t i = 0; i < nf; ++i)
+  {
+    std::size_t n = 0;
+    if(!lines.next(tokens) || !parse_count(tokens[0], n) || n >= tokens.size())
+      return false; // a face and its indices are on one line
+    polygons.emplace_back(n);
+    for(std::size_t k = 0; k < n; ++k)
+      if(!parse_count(tokens[k + 1], polygons.back()[k]) || polygons.back()[k] >= nv)
+        return false;
+  }
+  return true;
+}
+
+// PLY: one "ply" line, a "format" line (ascii, binary_little_endian or binary_big_endian),
+// then elements with their scalar or list properties, up to "end_header". The points are the
+// x, y, z properties of the "vertex" element and the faces the "vertex_indices" (or
+// "vertex_index") list of the "face" element; other elements and properties are skipped.
+template <typename Point>
+bool read_PLY(const std::string& text, std::vector<Point>& points, std::vector<std::vector<std::size_t> >& polygons)
+{
+  enum Format { PLY_ASCII, PLY_LITTLE_ENDIAN, PLY_BIG_ENDIAN };
+  struct Type { std::size_t size; bool is_signed, is_float; };
+  struct Property { std::string name; bool is_list; Type count_type, value_type; };
+  struct Element { std::string name; std::size_t count; std::vector<Property> properties; };
+
+  auto type_of = [](std::string_view name, Type& type) {
+    static const std::pair<const char*, Type> types[] = {
+      {"char", {1, true, false}},   {"int8", {1, true, false}},     {"uchar", {1, false, false}}, {"uint8", {1, false, false}},
+      {"short", {2, true, false}},  {"int16", {2, true, false}},    {"ushort", {2, false, false}}, {"uint16", {2, false, false}},
+      {"int", {4, true, false}},    {"int32", {4, true, false}},    {"uint", {4, false, false}},  {"uint32", {4, false, false}},
+      {"float", {4, true, true}},   {"float32", {4, true, true}},   {"double", {8, true, true}},  {"float64", {8, true, true}}};
+    for(const auto& t : types)
+      if(name == t.first)
+      {
+        type = t.second;
+        return true;
+      }
+    return false;
+  };
+
+  // The header, line by line.
+  Token_lines lines(text, 0, '\0');
+  std::vector<std::string_view> tokens;
+  if(!lines.next(tokens) || tokens.size() != 1 || tokens[0] != "ply" || !lines.next(tokens) || tokens.size() != 3
+     || tokens[0] != "format")
+    return false;
+  Format format;
+  if(tokens[1] == "ascii")
+    format = PLY_ASCII;
+  else if(tokens[1] == "binary_little_endian")
+    format = PLY_LITTLE_ENDIAN;
+  else if(tokens[1] == "binary_big_endian")
+    format = PLY_BIG_ENDIAN;
+  else
+    return false;
+  std::vector<Element> elements;
+  for(;;)
+  {
+    if(!lines.next(tokens))
+      return false; // no end_header
+    if(tokens[0] == "end_header" && tokens.size() == 1)
+      break;
+    if(tokens[0] == "comment" || tokens[0] == "obj_info")
+      continue;
+    if(tokens[0] == "element" && tokens.size() == 3)
+    {
+      elements.push_back(Element{std::string(tokens[1]), 0, {}});
+      if(!parse_count(tokens[2], elements.back().count))
+        return false;
+    }
+    else if(tokens[0] == "property" && !elements.empty() && tokens.size() == 3)
+    {
+      Property p{std::string(tokens[2]), false, {}, {}};
+      if(!type_of(tokens[1], p.value_type))
+        return false;
+      elements.back().properties.push_back(p);
+    }
+    else if(tokens[0] == "property" && !elements.empty() && tokens.size() == 5 && tokens[1] == "list")
+    {
+      Property p{std::string(tokens[4]), true, {}, {}};
+      if(!type_of(tokens[2], p.count_type) || p.count_type.is_float || !type_of(tokens[3], p.value_type))
+        return false;
+      elements.back().properties.push_back(p);
+    }
+    else
+      return false;
+  }
+
+  // The body: values are read one at a time, as doubles (exact for every PLY integer type).
+  std::size_t at = lines.position();
+  Token_lines ascii_lines(text, at, '\0');
+  std::vector<std::string_view> line_tokens;
+  std::size_t next_token = 0;
+  auto read_value = [&](const Type& type, double& value) {
+    if(format == PLY_ASCII)
+    {
+      while(next_token == line_tokens.size())
+      {
+        if(!ascii_lines.next(line_tokens))
+          return false;
+        next_token = 0;
+      }
+      return parse_double(line_tokens[next_token++], value);
+    }
+    if(text.size() - at < type.size)
+      return false;
+    const char* p = text.data() + at;
+    at += type.size;
+    const std::uint64_t bits = load_unsigned(p, type.size, format == PLY_BIG_ENDIAN);
+    if(type.is_float && type.size == 4)
+      value = load_float32(p, format == PLY_BIG_ENDIAN);
+    else if(type.is_float)
+    {
+      double d;
+      std::memcpy(&d, &bits, sizeof(double));
+      value = d;
+    }
+    else if(type.is_signed && (bits >> (8 * type.size - 1)) != 0)
+      value = double(bits) - std::ldexp(1., int(8 * type.size)); // two's complement
+    else
+      value = double(bits);
+    return true;
+  };
+  // An integer-valued number in [0, bound): a list length or a vertex index.
+  auto as_index = [](double value, std::size_t bound, std::size_t& index) {
+    if(!(value >= 0. && value < double(bound) && value == std::floor(value)))
+      return false;
+    index = static_cast<std::size_t>(value);
+    return true;
+  };
+
+  for(const Element& element : elements)
+  {
+    if(element.properties.empty())
+    {
+      if(element.count > 0)
+        return false;
+      continue;
+    }
+    // A record takes at least one byte per scalar property, and per list length.
+    if(element.count > (text.size() - at) / element.properties.size())
+      return false;
+    const bool is_vertex = (element.name == "vertex"), is_face = (element.name == "face");
+    std::array<int, 3> xyz{{-1, -1, -1}};
+    int face_list = -1;
+    for(std::size_t k = 0; k < element.properties.size(); ++k)
+    {
+      const Property& p = element.properties[k];
+      if(is_vertex && !p.is_list && p.name.size() == 1 && p.name[0] >= 'x' && p.name[0] <= 'z')
+        xyz[p.name[0] - 'x'] = int(k);
+      if(is_face && p.is_list && (p.name == "vertex_indices" || p.name == "vertex_index"))
+        face_list = int(k);
+    }
+    if(is_vertex && (xyz[0] < 0 || xyz[1] < 0 || xyz[2] < 0))
+      return false;
+    if(is_face && face_list < 0)
+      return false;
+    if(is_vertex)
+      points.reserve(element.count);
+
+    for(std::size_t r = 0; r < element.count; ++r)
+    {
+      double coordinates[3] = {0., 0., 0.};
+      for(std::size_t k = 0; k < element.properties.size(); ++k)
+      {
+        const Property& p = element.properties[k];
+        double value = 0.;
+        if(!read_value(p.is_list ? p.count_type : p.value_type, value))
+          return false;
+        if(!p.is_list)
+        {
+          for(int c = 0; c < 3; ++c)
+            if(is_vertex && xyz[c] == int(k))
+              coordinates[c] = value;
+          continue;
+        }
+        std::size_t length = 0;
+        const std::size_t room = (format == PLY_ASCII ? text.size() : text.size() - at) / p.value_type.size + 1;
+        if(!as_index(value, room, length))
+          return false;
+        const bool wanted = is_face && face_list == int(k);
+        if(wanted)
+          polygons.emplace_back();
+        for(std::size_t i = 0; i < length; ++i)
+        {
+          if(!read_value(p.value_type, value))
+            return false;
+          std::size_t index = 0;
+          if(wanted)
+          {
+            if(!as_index(value, std::numeric_limits<std::uint32_t>::max(), index))
+              return false;
+            polygons.back().push_back(index);
+          }
+        }
+      }
+      if(is_vertex)
+        points.push_back(Point(coordinates[0], coordinates[1], coordinates[2]));
+    }
+  }
+  // Faces may come before the vertices: their indices are checked once all points are known.
+  for(const std::vector<std::size_t>& polygon : polygons)
+    for(std::size_t index : polygon)
+      if(index >= points.size())
+        return false;
+  return true;
+}
+
 } // namespace internal
 
 /// \ingroup PkgConformalRemeshingIO
@@ -102,6 +533,12 @@ bool read_binary_STL(const std::string& filename, std::vector<Point>& points,
 /// connected component (`topology_available`), and `mesh` is cleared otherwise. The STL readers
 /// merge the identical corners of the file's triangle soup into shared vertices (corners with
 /// non-finite coordinates are never merged, so that the checks see them).
+///
+/// The OFF and PLY files are parsed by the package's own strict readers (OFF: ASCII with the
+/// `ST`, `C`, `N`, `4` and `n` header prefixes, and plain binary; PLY: ASCII and both binary
+/// byte orders, any element and property types): every count in a file is checked against the
+/// size of the file before memory is allocated, so that a short hostile file cannot exhaust
+/// memory. Faces with other than three vertices are read, and reported as non-triangle faces.
 ///
 /// \tparam PolygonMesh a model of `MutableFaceGraph` with an internal point property map
 ///
@@ -138,8 +575,14 @@ Mesh_check_report read_and_check_mesh(const std::string& filename, PolygonMesh& 
   bool parsed = false;
   try
   {
-    parsed = (extension == "stl" && internal::read_binary_STL(filename, points, polygons))
-             || CGAL::IO::read_polygon_soup(filename, points, polygons, CGAL::parameters::verbose(false));
+    std::string bytes;
+    if(extension == "off" || extension == "ply")
+      parsed = internal::read_file_bytes(filename, bytes)
+               && (extension == "off" ? internal::read_OFF(bytes, points, polygons)
+                                      : internal::read_PLY(bytes, points, polygons));
+    else
+      parsed = (extension == "stl" && internal::read_binary_STL(filename, points, polygons))
+               || CGAL::IO::read_polygon_soup(filename, points, polygons, CGAL::parameters::verbose(false));
   }
   catch(const std::exception& e)
   {
@@ -165,15 +608,14 @@ Mesh_check_report read_and_check_mesh(const std::string& filename, PolygonMesh& 
   Mesh_check_report report = check_polygon_soup<Kernel>(points, polygons);
 
   clear(mesh);
-  const bool buildable = report.count(Mesh_defect::INVALID_VERTEX_INDEX) == 0
+  const bool buildable = !polygons.empty() && report.count(Mesh_defect::INVALID_VERTEX_INDEX) == 0
                          && report.count(Mesh_defect::NON_MANIFOLD_VERTEX) == 0
                          && Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons);
   if(buildable)
   {
     Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, mesh);
-    report.topology_available = !polygons.empty();
-    if(report.topology_available)
-      report.components = internal::component_topologies(mesh);
+    report.topology_available = true;
+    report.components = internal::component_topologies(mesh);
   }
   return report;
 }

@@ -151,6 +151,10 @@ std::vector<Defect_summary> find_soup_defects(const PointRange& points, const Po
       example << ")" << (repeated ? " repeats a vertex" : " has collinear vertices");
       defects.add(Mesh_defect::DEGENERATE_FACE, example.str());
     }
+    // A face through one vertex twice runs along an edge both ways: the edge and fan checks
+    // below would report that one defect again as a non-manifold edge and vertices.
+    if(repeated)
+      usable[f] = false;
   }
 
   // Duplicates: equal coordinates end up next to each other after a lexicographic sort.
