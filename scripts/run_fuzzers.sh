@@ -43,16 +43,26 @@ for source in "$root"/fuzz/*.cpp; do
   targets+=("$(basename "$source" .cpp)")
 done
 
+# Each target is one translation unit: build them side by side, rebuilding only those whose
+# source or a package header changed.
+builds=()
 for target in "${targets[@]}"; do
   binary="$build/$target"
   source="$root/fuzz/$target.cpp"
-  # Rebuild only when the target or a package header changed.
   if [ ! -x "$binary" ] || [ -n "$(find "$source" "$root/include" -newer "$binary" -print -quit)" ]; then
     echo "Building $target"
     clang++ -std=c++17 -O1 -g -fno-omit-frame-pointer \
             -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined \
-            -I"$root/include" -I/usr/include/eigen3 "$source" -o "$binary" -lgmp -lmpfr
+            -I"$root/include" -I/usr/include/eigen3 "$source" -o "$binary.part" -lgmp -lmpfr &
+    builds+=("$!:$target")
   fi
+done
+for b in "${builds[@]}"; do
+  if ! wait "${b%%:*}"; then
+    echo "run_fuzzers.sh: building ${b#*:} failed" >&2
+    exit 1
+  fi
+  mv "$build/${b#*:}.part" "$build/${b#*:}"
 done
 
 export ASAN_OPTIONS="detect_leaks=1:abort_on_error=1"
