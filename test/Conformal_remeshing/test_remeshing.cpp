@@ -19,10 +19,7 @@
 
 #include <gtest/gtest.h>
 
-#include <algorithm>
 #include <cmath>
-#include <map>
-#include <set>
 #include <string>
 #include <vector>
 
@@ -115,132 +112,6 @@ TEST(RemeshConformal, PlanarStageWithExactConstructions)
     EXPECT_NEAR(area, 4. - 0.36, 1e-12); // the square minus the hole, exactly covered
     EXPECT_GE(smallest, 20.);
   }
-}
-
-TEST(RemeshConformal, MeanSkewnessOfTheWavyStrip)
-{
-  // Issue #5: mean equiangle skewness at most 0.12 (about 0.16 before the planar optimization).
-  Mesh mesh, output;
-  bm::make_wavy_c_strip(mesh);
-  CR::remesh_conformal(mesh, output);
-  const CR::Mesh_quality_report q = CR::mesh_quality(output);
-  EXPECT_LE(q.skewness.mean, 0.12);
-  EXPECT_GE(q.minimum_angle.min, 20.);
-}
-
-namespace {
-
-namespace RM = CR::internal::remeshing;
-
-// A square loop of side 2 `half`, sampled every `spacing`, counterclockwise or clockwise.
-std::vector<RM::Boundary_sample> sampled_square(double half, double spacing, bool clockwise)
-{
-  std::vector<CGAL::Epick::Point_2> corners{{-half, -half}, {half, -half}, {half, half}, {-half, half}};
-  if(clockwise)
-    std::reverse(corners.begin(), corners.end());
-  const int pieces = int(std::lround(2. * half / spacing));
-  std::vector<RM::Boundary_sample> loop;
-  for(int side = 0; side < 4; ++side)
-    for(int i = 0; i < pieces; ++i)
-    {
-      const CGAL::Epick::Point_2 p = CGAL::barycenter(corners[side], double(pieces - i), corners[(side + 1) % 4], double(i));
-      loop.push_back(RM::Boundary_sample{p, CGAL::Epick::Point_3(p.x(), p.y(), 0.)});
-    }
-  return loop;
-}
-
-struct Planar_statistics
-{
-  double area = 0., smallest_angle = 180., mean_skewness = 0.;
-  std::size_t folded = 0, irregular = 0, regular = 0;
-  std::set<std::pair<int, int> > boundary_edges; // directed
-  std::set<int> boundary_vertices;
-  bool manifold = true;
-};
-
-Planar_statistics planar_statistics(const RM::Planar_mesh& m)
-{
-  Planar_statistics s;
-  std::map<std::pair<int, int>, int> directed;
-  for(const auto& t : m.triangles)
-  {
-    const CGAL::Epick::Point_2 &a = m.points[t[0]], &b = m.points[t[1]], &c = m.points[t[2]];
-    s.folded += CGAL::orientation(a, b, c) != CGAL::POSITIVE;
-    s.area += CGAL::area(a, b, c);
-    const CR::Triangle_quality q = CR::triangle_quality(K::Point_3(a.x(), a.y(), 0), K::Point_3(b.x(), b.y(), 0), K::Point_3(c.x(), c.y(), 0));
-    s.smallest_angle = (std::min)({s.smallest_angle, q.angles[0], q.angles[1], q.angles[2]});
-    s.mean_skewness += q.skewness / double(m.triangles.size());
-    for(int k = 0; k < 3; ++k)
-      s.manifold = s.manifold && ++directed[std::make_pair(t[k], t[(k + 1) % 3])] == 1;
-  }
-  std::vector<std::set<int> > neighbours(m.points.size());
-  for(const auto& e : directed)
-  {
-    neighbours[e.first.first].insert(e.first.second);
-    neighbours[e.first.second].insert(e.first.first);
-    if(directed.count(std::make_pair(e.first.second, e.first.first)) == 0)
-    {
-      s.boundary_edges.insert(e.first);
-      s.boundary_vertices.insert(e.first.first);
-      s.boundary_vertices.insert(e.first.second);
-    }
-  }
-  for(std::size_t v = 0; v < m.points.size(); ++v)
-    if(s.boundary_vertices.count(int(v)) == 0)
-      (neighbours[v].size() == 6 ? s.regular : s.irregular) += 1;
-  return s;
-}
-
-} // namespace
-
-TEST(PlanarOptimization, KeepsTheDomainAndImprovesTheMesh)
-{
-  // A square with a square hole, a size field varying by 2 across it, boundary points fixed
-  // (shared with a neighbour) or split by the refinement.
-  const std::vector<std::vector<RM::Boundary_sample> > loops{sampled_square(1., 0.1, false), sampled_square(0.3, 0.1, true)};
-  const auto size = [](const CGAL::Epick::Point_2& p) { return 0.1 + 0.05 * (p.x() + 1.); };
-  for(bool split_boundary : {false, true})
-  {
-    const RM::Planar_mesh raw = RM::mesh_planar_domain<CGAL::Epick>(loops, 28., size, 0, split_boundary);
-    RM::Planar_mesh optimized = raw;
-    const RM::Planar_optimization_report report =
-      RM::optimize_planar_triangulation(optimized.points, optimized.triangles, optimized.number_of_samples, 3);
-    EXPECT_TRUE(report.optimized);
-    EXPECT_GT(report.flips, 0u);
-    EXPECT_GT(report.moves, 0u);
-    ASSERT_EQ(optimized.points.size(), raw.points.size());
-    ASSERT_EQ(optimized.triangles.size(), raw.triangles.size());
-
-    const Planar_statistics before = planar_statistics(raw), after = planar_statistics(optimized);
-    ASSERT_GT(raw.triangles.size(), 300u);
-    EXPECT_TRUE(after.manifold);
-    EXPECT_EQ(after.folded, 0u);
-    EXPECT_NEAR(after.area, 4. - 0.36, 1e-12); // the same domain, exactly covered
-    EXPECT_EQ(after.boundary_edges, before.boundary_edges);
-    for(int v : before.boundary_vertices)
-      EXPECT_EQ(optimized.points[v], raw.points[v]);
-    for(std::size_t v = 0; v < raw.number_of_samples; ++v)
-      EXPECT_EQ(optimized.points[v], raw.points[v]);
-
-    // More valence-6 vertices inside, no angle below min(28, the smallest before), better shapes.
-    EXPECT_LT(after.irregular, before.irregular);
-    EXPECT_GT(double(after.regular) / double(after.regular + after.irregular), 0.65);
-    EXPECT_GE(after.smallest_angle, (std::min)(28., before.smallest_angle) - 1e-9);
-    EXPECT_LT(after.mean_skewness, before.mean_skewness);
-    EXPECT_LT(after.mean_skewness, 0.12);
-  }
-}
-
-TEST(PlanarOptimization, LeavesANonManifoldInputAsIs)
-{
-  // Three triangles on the edge (0, 1).
-  std::vector<CGAL::Epick::Point_2> points{{0., 0.}, {1., 0.}, {0.5, 1.}, {0.5, -1.}, {0.5, 2.}};
-  std::vector<std::array<int, 3> > triangles{{{0, 1, 2}}, {{1, 0, 3}}, {{0, 1, 4}}};
-  const auto points_before = points;
-  const auto triangles_before = triangles;
-  EXPECT_FALSE(RM::optimize_planar_triangulation(points, triangles, 0, 3).optimized);
-  EXPECT_EQ(points, points_before);
-  EXPECT_EQ(triangles, triangles_before);
 }
 
 TEST(RemeshConformal, BadParametersAreRefused)

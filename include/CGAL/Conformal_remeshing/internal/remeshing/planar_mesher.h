@@ -8,7 +8,6 @@
 #define CGAL_CONFORMAL_REMESHING_INTERNAL_REMESHING_PLANAR_MESHER_H
 
 #include <CGAL/Conformal_remeshing/conformal_flatten.h>
-#include <CGAL/Conformal_remeshing/internal/remeshing/planar_optimization.h>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Delaunay_mesh_face_base_2.h>
@@ -232,16 +231,14 @@ void mark_domain(CDT& cdt)
 /// Meshes the domain bounded by `loops` (outer loop first) with CGAL's constrained Delaunay
 /// refinement over `Kernel`: a minimum angle of `min_angle_degrees` (up to the refinement's
 /// guarantees near small input angles) and a longest edge below `size(p)` at each triangle's
-/// centroid. Then `smoothing_iterations` rounds of mesh optimization
-/// (`optimize_planar_triangulation()`: flips toward valence 6, shape smoothing of the free
-/// vertices), with `min_angle_degrees` as its angle bound unless `optimization` sets a smaller
-/// one; the boundary points never move.
+/// centroid. Then `smoothing_iterations` passes of Laplacian smoothing of the free vertices:
+/// each moves to the mean of its neighbours when its star stays positively oriented, the points
+/// are triangulated again with the same constraints and refined again, so the bounds still hold.
 /// With `split_boundary == false` no point is added on the loops (their samples are shared with
 /// a neighbouring patch; see `Fixed_boundary_mesher_2`).
 template <typename Kernel, typename Size_field>
 Planar_mesh mesh_planar_domain(const std::vector<std::vector<Boundary_sample> >& loops, double min_angle_degrees,
-                               const Size_field& size, int smoothing_iterations, bool split_boundary = true,
-                               Planar_optimization_parameters optimization = Planar_optimization_parameters())
+                               const Size_field& size, int smoothing_iterations, bool split_boundary = true)
 {
   typedef CGAL::Delaunay_mesh_vertex_base_2<Kernel> Vb;
   typedef CGAL::Delaunay_mesh_face_base_2<Kernel> Fb;
@@ -279,10 +276,56 @@ Planar_mesh mesh_planar_domain(const std::vector<std::vector<Boundary_sample> >&
   }
   refine(cdt);
 
+  for(int iteration = 0; iteration < smoothing_iterations; ++iteration)
+  {
+    std::vector<std::pair<Point, Point> > constraints;
+    for(auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e)
+      if(cdt.is_constrained(*e))
+        constraints.emplace_back(e->first->vertex(CDT::cw(e->second))->point(), e->first->vertex(CDT::ccw(e->second))->point());
+    std::vector<Point> free_points;
+    for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+    {
+      if(cdt.are_there_incident_constraints(v))
+        continue;
+      // The mean of the neighbours in the surface's metric: the plane is scaled by the size field,
+      // so each neighbour weighs 1 / size^2 at the edge's midpoint.
+      double x = 0., y = 0., n = 0.;
+      const double vx = CGAL::to_double(v->point().x()), vy = CGAL::to_double(v->point().y());
+      auto c = cdt.incident_vertices(v), done = c;
+      do
+        if(!cdt.is_infinite(c))
+        {
+          const double cx = CGAL::to_double(c->point().x()), cy = CGAL::to_double(c->point().y());
+          const double local = size(Epick::Point_2(0.5 * (vx + cx), 0.5 * (vy + cy)));
+          const double w = 1. / (local * local);
+          x += w * cx;
+          y += w * cy;
+          n += w;
+        }
+      while(++c != done);
+      const Point moved(x / n, y / n);
+      bool star_stays_positive = true;
+      auto f = cdt.incident_faces(v), first = f;
+      do
+      {
+        const int i = f->index(v);
+        star_stays_positive = star_stays_positive && !cdt.is_infinite(f)
+                              && CGAL::orientation(moved, f->vertex(CDT::ccw(i))->point(), f->vertex(CDT::cw(i))->point()) == CGAL::POSITIVE;
+      }
+      while(++f != first);
+      free_points.push_back(star_stays_positive ? moved : v->point());
+    }
+    CDT smoothed;
+    for(const auto& c : constraints)
+      smoothed.insert_constraint(c.first, c.second);
+    smoothed.insert(free_points.begin(), free_points.end());
+    refine(smoothed);
+    cdt.swap(smoothed);
+  }
+
   // Output: the boundary samples first, in loop order, then the other vertices.
   Planar_mesh result;
   std::map<Vertex_handle, int> index;
-  std::vector<int> sample_index; // of each sample of `loops`, in order
   for(const auto& loop : loops)
     for(const Boundary_sample& s : loop)
     {
@@ -291,10 +334,8 @@ Planar_mesh mesh_planar_domain(const std::vector<std::vector<Boundary_sample> >&
       const Face_handle f = cdt.locate(Point(s.uv.x(), s.uv.y()), type, i);
       if(type != CDT::VERTEX)
         throw Error(Error_code::INVALID_INPUT, "planar meshing lost a boundary sample (internal error)");
-      const auto inserted = index.emplace(f->vertex(i), int(result.points.size()));
-      if(inserted.second)
+      if(index.emplace(f->vertex(i), int(result.points.size())).second)
         result.points.push_back(s.uv);
-      sample_index.push_back(inserted.first->second);
     }
   result.number_of_samples = result.points.size();
   for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
@@ -303,27 +344,6 @@ Planar_mesh mesh_planar_domain(const std::vector<std::vector<Boundary_sample> >&
   for(Face_handle f : cdt.finite_face_handles())
     if(f->is_in_domain())
       result.triangles.push_back({{index.at(f->vertex(0)), index.at(f->vertex(1)), index.at(f->vertex(2))}});
-
-  // The surface's angle at the corners of the loops (a turn of more than 30 degrees in 3D):
-  // the flattening does not keep the angle of such a corner, and the optimization gives the
-  // corner the valence that suits its angle on the surface (a 60 degree corner: one triangle).
-  std::vector<double> surface_angle(result.number_of_samples, 0.);
-  std::size_t at = 0;
-  for(const auto& loop : loops)
-    for(std::size_t k = 0; k < loop.size(); ++k, ++at)
-    {
-      const std::size_t n = loop.size();
-      const Epick::Vector_3 u = loop[(k + n - 1) % n].point - loop[k].point, v = loop[(k + 1) % n].point - loop[k].point;
-      const double lengths = std::sqrt(u.squared_length() * v.squared_length());
-      if(!(lengths > 0.))
-        continue;
-      const double angle = std::acos((std::max)(-1., (std::min)(1., (u * v) / lengths)));
-      if(std::abs(angle - CGAL_PI) > CGAL_PI / 6.)
-        surface_angle[sample_index[at]] = angle;
-    }
-  optimization.angle_bound_degrees = (std::min)(optimization.angle_bound_degrees, min_angle_degrees);
-  optimize_planar_triangulation(result.points, result.triangles, result.number_of_samples, smoothing_iterations,
-                                surface_angle, optimization);
   return result;
 }
 
