@@ -9,6 +9,8 @@
 // NaN, infinities, denormals, 1e300), then the number of faces (1 byte) and each face (its size,
 // then its indices, 1 byte each, which may point past the last point).
 
+#include "fuzz_support.h"
+
 #include <CGAL/Conformal_remeshing/check_mesh.h>
 #include <CGAL/Conformal_remeshing/mesh_quality.h>
 #include <CGAL/Conformal_remeshing/verify_remesh.h>
@@ -32,44 +34,25 @@ typedef CGAL::Surface_mesh<Point> Mesh;
 
 namespace {
 
-void fail(const char* what)
+void fail(const char* what) { fuzz::fail("fuzz_check_soup", what); }
+
+// A coordinate: a small lattice value, so that collinear faces and duplicated points are common,
+// or after a marker byte any double.
+double next_coordinate(fuzz::Bytes& bytes)
 {
-  std::fprintf(stderr, "fuzz_check_soup: %s\n", what);
-  std::abort();
+  const std::uint8_t b = bytes.next();
+  return b < 0xf0 ? (int(b % 16) - 8) * 0.5 : bytes.raw_double();
 }
-
-class Bytes
-{
-public:
-  Bytes(const std::uint8_t* data, std::size_t size) : data_(data), size_(size) {}
-  std::uint8_t next() { return at_ < size_ ? data_[at_++] : 0; }
-  double next_coordinate()
-  {
-    const std::uint8_t b = next();
-    if(b < 0xf0)
-      return (int(b % 16) - 8) * 0.5; // a lattice of half units
-    double x = 0.;
-    unsigned char raw[8];
-    for(unsigned char& r : raw)
-      r = next();
-    std::memcpy(&x, raw, sizeof(double));
-    return x;
-  }
-
-private:
-  const std::uint8_t* data_;
-  std::size_t size_, at_ = 0;
-};
 
 } // namespace
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size)
 {
-  Bytes bytes(data, size);
+  fuzz::Bytes bytes(data, size);
   std::vector<Point> points(bytes.next() % 24);
   for(Point& p : points)
   {
-    const double x = bytes.next_coordinate(), y = bytes.next_coordinate(), z = bytes.next_coordinate();
+    const double x = next_coordinate(bytes), y = next_coordinate(bytes), z = next_coordinate(bytes);
     p = Point(x, y, z);
   }
   std::vector<std::vector<std::size_t> > polygons(bytes.next() % 48);

@@ -8,6 +8,8 @@
 // The defined outcomes are: a report, or a CGAL::Conformal_remeshing::Error. Anything else (a
 // crash, a sanitizer report, another exception, an inconsistent report) is a bug.
 
+#include "fuzz_support.h"
+
 #include <CGAL/Conformal_remeshing/IO/read_mesh.h>
 #include <CGAL/Conformal_remeshing/check_mesh.h>
 #include <CGAL/Conformal_remeshing/mesh_quality.h>
@@ -30,12 +32,7 @@ typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 
 namespace {
 
-// Stops the fuzzer with a message: libFuzzer saves the input that broke the invariant.
-void fail(const char* what)
-{
-  std::fprintf(stderr, "fuzz_read_mesh: %s\n", what);
-  std::abort();
-}
+void fail(const char* what) { fuzz::fail("fuzz_read_mesh", what); }
 
 std::string scratch_file(const char* extension)
 {

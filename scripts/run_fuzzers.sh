@@ -49,7 +49,7 @@ builds=()
 for target in "${targets[@]}"; do
   binary="$build/$target"
   source="$root/fuzz/$target.cpp"
-  if [ ! -x "$binary" ] || [ -n "$(find "$source" "$root/include" -newer "$binary" -print -quit)" ]; then
+  if [ ! -x "$binary" ] || [ -n "$(find "$source" "$root/fuzz/fuzz_support.h" "$root/include" -newer "$binary" -print -quit)" ]; then
     echo "Building $target"
     clang++ -std=c++17 -O1 -g -fno-omit-frame-pointer \
             -fsanitize=fuzzer,address,undefined -fno-sanitize-recover=undefined \

@@ -3,10 +3,12 @@
 //   remesh_conformal IN OUT [--target-edge-length L | --relative-edge-length R] [--min-angle DEG]
 //                    [--features-angle DEG] [--patches FILE] [--cut-plane a,b,c,d]...
 //                    [--save-patches DIR] [--sequential] [--report FILE.json] [--plots DIR] [--quiet]
+//                    [--time-limit SECONDS]
 //
 // Progress goes to standard error; OUT is written completely or not at all. Exit codes: 0
 // success, 1 the input cannot be remeshed (defects, unsupported topology, failed flattening),
-// 2 the tool could not run (bad arguments, unreadable input, unwritable output).
+// 2 the tool could not run (bad arguments, unreadable input, unwritable output), 3 the time
+// limit was exceeded (nothing written).
 
 #include "atomic_file.h"
 #include "flattening_pictures.h"
@@ -21,9 +23,11 @@
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <algorithm>
 #include <chrono>
 #include <fstream>
 #include <iostream>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -39,6 +43,7 @@ const char* usage =
   "usage: remesh_conformal IN OUT [--target-edge-length L | --relative-edge-length R] [--min-angle DEG]\n"
   "                        [--features-angle DEG] [--patches FILE] [--cut-plane a,b,c,d]...\n"
   "                        [--save-patches DIR] [--sequential] [--report FILE.json] [--plots DIR] [--quiet]\n"
+  "                        [--time-limit SECONDS]\n"
   "  IN, OUT                 mesh files (.off .obj .ply .stl); OUT is written atomically\n"
   "  --target-edge-length L  target edge length in the input's units\n"
   "  --relative-edge-length R  target edge length as a fraction of the bounding-box diagonal (default 0.01)\n"
@@ -51,13 +56,15 @@ const char* usage =
   "  --report FILE.json      stage times, segmentation and flattening, quality of input and output, fidelity\n"
   "  --plots DIR             DIR/quality.svg: angle and skewness histograms, input and output\n"
   "  --quiet                 no progress messages\n"
+  "  --time-limit SECONDS    give up (exit code 3, no output written) if reading and remeshing take longer\n"
   "Any orientable, edge-manifold triangle mesh: closed or open, any genus, several components.\n"
-  "exit code: 0 success, 1 the input cannot be remeshed, 2 the tool could not run\n";
+  "exit code: 0 success, 1 the input cannot be remeshed, 2 the tool could not run, 3 time limit exceeded\n";
 
 struct Options
 {
   std::string input, output, report, plots, patches, save_patches;
   double target = 0., relative = 0.01, min_angle = 28., features_angle = 60.;
+  double time_limit = std::numeric_limits<double>::infinity();
   std::vector<K::Plane_3> planes;
   bool quiet = false, sequential = false;
 };
@@ -120,6 +127,8 @@ bool parse(int argc, char** argv, Options& o)
       o.plots = argv[++i];
     else if(arg == "--quiet")
       o.quiet = true;
+    else if(arg == "--time-limit")
+      ok = number(o.time_limit) && o.time_limit > 0.;
     else if(!arg.empty() && arg[0] != '-' && o.input.empty())
       o.input = arg;
     else if(!arg.empty() && arg[0] != '-' && o.output.empty())
@@ -144,6 +153,7 @@ bool parse(int argc, char** argv, Options& o)
 
 int main(int argc, char** argv)
 {
+  const auto start = std::chrono::steady_clock::now();
   for(int i = 1; i < argc; ++i)
     if(std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h")
     {
@@ -156,6 +166,15 @@ int main(int argc, char** argv)
   auto progress = [&](const std::string& message) {
     if(!o.quiet)
       std::cerr << "remesh_conformal: " << message << std::endl;
+  };
+  // --time-limit counts from the start; the library stops with TIME_LIMIT_EXCEEDED past it.
+  auto remaining_time = [&]() {
+    return (std::max)(0., o.time_limit - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  };
+  auto out_of_time = [&](const std::string& why) {
+    std::cerr << "remesh_conformal: the time limit of " << o.time_limit << " s (--time-limit) was exceeded; no output written ("
+              << why << ")\n";
+    return 3;
   };
 
   Mesh input;
@@ -174,6 +193,8 @@ int main(int argc, char** argv)
     std::cerr << "remesh_conformal: " << e.what() << "\n";
     return 2;
   }
+  if(!(remaining_time() > 0.))
+    return out_of_time("stopped after reading the input");
 
   // User patches: one id per face, all read before anything runs.
   auto patch_of = input.add_property_map<Mesh::Face_index, std::size_t>("f:user_patch", 0).first;
@@ -220,12 +241,15 @@ int main(int argc, char** argv)
         tools::write_file_atomically_at(name + ".off", [&](const std::string& temporary) {
           return CGAL::IO::write_polygon_mesh(temporary, patch.mesh, CGAL::parameters::stream_precision(17));
         });
-        const CR::Conformal_flattening flat = CR::conformal_flatten(patch.mesh, CR::parameters::maximum_edge_length(2. * target));
+        const CR::Conformal_flattening flat = CR::conformal_flatten(
+          patch.mesh, CR::parameters::maximum_running_time(remaining_time(), CR::parameters::maximum_edge_length(2. * target)));
         tools::write_file_atomically(name + "_flattening.svg", tools::welded_domain_svg(flat));
       }
     }
     catch(const CR::Error& e)
     {
+      if(e.code() == CR::Error_code::TIME_LIMIT_EXCEEDED)
+        return out_of_time(e.what());
       std::cerr << "remesh_conformal: " << e.what() << "\n";
       return 1;
     }
@@ -241,11 +265,14 @@ int main(int argc, char** argv)
   try
   {
     progress("remeshing " + std::to_string(input.number_of_faces()) + " faces");
-    report = o.sequential ? CR::remesh_conformal<CGAL::Sequential_tag>(input, output, np)
-                          : CR::remesh_conformal<CGAL::Parallel_if_available_tag>(input, output, np);
+    const auto limited = CR::parameters::maximum_running_time(remaining_time(), np);
+    report = o.sequential ? CR::remesh_conformal<CGAL::Sequential_tag>(input, output, limited)
+                          : CR::remesh_conformal<CGAL::Parallel_if_available_tag>(input, output, limited);
   }
   catch(const CR::Error& e)
   {
+    if(e.code() == CR::Error_code::TIME_LIMIT_EXCEEDED)
+      return out_of_time(e.what());
     std::cerr << "remesh_conformal: " << e.what() << "\n";
     return 1;
   }
@@ -266,6 +293,7 @@ int main(int argc, char** argv)
           .field("flattening", report.seconds_flattening).field("meshing_and_pull_back", report.seconds_meshing_stage)
           .field("gluing", report.seconds_gluing).field("ricci_flow_thread_seconds", report.seconds_ricci_flow)
           .field("planar_meshing_thread_seconds", report.seconds_planar_meshing)
+          .field("optimization_thread_seconds", report.seconds_optimization)
           .field("pull_back_thread_seconds", report.seconds_pull_back).end_object();
       json.key("segmentation").begin_object().field("patches", report.number_of_patches)
           .field("plane_cuts", report.plane_cuts).field("patch_bisections", report.patch_bisections)
@@ -274,7 +302,8 @@ int main(int argc, char** argv)
       json.key("flattening").begin_object().field("max_iterations", report.max_newton_iterations)
           .field("max_curvature_error", report.max_curvature_error).field("flips", report.flips)
           .field("max_scale_ratio", report.max_scale_ratio).end_object();
-      json.field("boundary_samples", report.boundary_samples).field("clamped_vertices", report.clamped_vertices);
+      json.field("boundary_samples", report.boundary_samples).field("clamped_vertices", report.clamped_vertices)
+          .field("optimization_flips", report.optimization_flips);
       json.key("input_quality");
       tools::write_json(json, before);
       json.key("output_quality");

@@ -10,9 +10,11 @@
 #include <CGAL/Conformal_remeshing/Error.h>
 #include <CGAL/Conformal_remeshing/conformal_flatten.h>
 #include <CGAL/Conformal_remeshing/internal/named_parameters.h>
+#include <CGAL/Conformal_remeshing/internal/time_limit.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/boundary_curves.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/planar_locator.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/planar_mesher.h>
+#include <CGAL/Conformal_remeshing/internal/remeshing/surface_optimization.h>
 #include <CGAL/Conformal_remeshing/segment_into_poly_annuli.h>
 
 #include <CGAL/Polygon_mesh_processing/bbox.h>
@@ -36,13 +38,14 @@
 // Named parameters of `remesh_conformal()` (see its documentation): `target_edge_length(l)`,
 // `relative_target_edge_length(r)` (default 0.01 of the bounding-box diagonal),
 // `minimum_angle(degrees)` (default 28), `corner_angle(degrees)` (default 30),
-// `smoothing_iterations(n)` (default 3), `maximum_scale_ratio(r)` (default 1000) and
-// `progress(callable)`.
+// `smoothing_iterations(n)` (default 3), `optimization_rounds(n)` (default 5),
+// `maximum_scale_ratio(r)` (default 1000) and `progress(callable)`.
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(target_edge_length)
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(relative_target_edge_length)
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(minimum_angle)
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(corner_angle)
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(smoothing_iterations)
+CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(optimization_rounds)
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(maximum_scale_ratio)
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(progress)
 
@@ -72,10 +75,11 @@ struct Remeshing_report
   /// output vertices whose planar position fell outside the flat patch (between a boundary
   /// chord and the boundary polyline) and were clamped onto the nearest patch triangle
   std::size_t clamped_vertices = 0;
+  std::size_t optimization_flips = 0; ///< edge flips of the optimization on the surface
   /// wall-clock seconds of the stages (the flattening and meshing stages run patches in parallel)
   double seconds_segmentation = 0., seconds_flattening = 0., seconds_meshing_stage = 0., seconds_gluing = 0.;
   /// seconds summed over the patches (thread time)
-  double seconds_ricci_flow = 0., seconds_planar_meshing = 0., seconds_pull_back = 0.;
+  double seconds_ricci_flow = 0., seconds_planar_meshing = 0., seconds_optimization = 0., seconds_pull_back = 0.;
 };
 
 /// \ingroup PkgConformalRemeshingRef
@@ -132,14 +136,15 @@ struct Remeshed_patch
   std::vector<Poly_annulus_segmentation::Face> interior_faces; // the segmented face of each
   std::vector<std::array<std::size_t, 3> > triangles;
   std::size_t clamped_vertices = 0;
-  double seconds_planar_meshing = 0., seconds_pull_back = 0.;
+  std::size_t flips = 0; // by the optimization
+  double seconds_planar_meshing = 0., seconds_optimization = 0., seconds_pull_back = 0.;
 };
 
 // Planar Delaunay refinement of a flattened patch with the shared boundary samples, then the
 // pull-back of the new points onto the surface through the flow's correspondence.
 inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, const Extracted_patch& patch,
                                              const Curve_samples& samples, double h, double min_angle,
-                                             int smoothing_iterations)
+                                             int smoothing_iterations, int optimization_rounds)
 {
   typedef std::chrono::steady_clock Clock;
   Clock::time_point start = Clock::now();
@@ -158,10 +163,28 @@ inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, c
   loops.push_back(loop_samples(flat.outer_boundary, patch, samples, result.boundary_ids));
   for(const auto& hole : flat.holes)
     loops.push_back(loop_samples(hole, patch, samples, result.boundary_ids));
-  const Planar_mesh planar = mesh_planar_domain<Epick>(loops, min_angle, planar_size, smoothing_iterations, false);
+  Planar_mesh planar = mesh_planar_domain<Epick>(loops, min_angle, planar_size, smoothing_iterations, false);
   if(planar.number_of_samples != result.boundary_ids.size())
     throw Error(Error_code::NOT_AN_EMBEDDING, "remesh_conformal: the boundary samples of a patch overlap in the plane");
   result.seconds_planar_meshing = std::chrono::duration<double>(Clock::now() - start).count();
+
+  // Flips and moves judged on the surface (see surface_optimization.h).
+  start = Clock::now();
+  const auto lift = [&](const Epick::Point_2& p) {
+    const Planar_locator::Location l = locator.locate(p);
+    return flat.to_surface(l.triangle, l.coordinates).point;
+  };
+  std::vector<Epick::Point_3> positions;
+  positions.reserve(planar.points.size());
+  for(const auto& loop : loops)
+    for(const Boundary_sample& s : loop)
+      positions.push_back(s.point);
+  for(std::size_t i = planar.number_of_samples; i < planar.points.size(); ++i)
+    positions.push_back(lift(planar.points[i]));
+  const Surface_optimization_report optimization = optimize_on_surface(
+    planar.points, positions, planar.triangles, planar.number_of_samples, lift, min_angle, 1.4 * h, optimization_rounds);
+  result.flips = optimization.flips;
+  result.seconds_optimization = std::chrono::duration<double>(Clock::now() - start).count();
 
   start = Clock::now();
   for(std::size_t i = planar.number_of_samples; i < planar.points.size(); ++i)
@@ -259,6 +282,10 @@ void for_each_patch(std::size_t n, const Task& task)
 ///     \cgalParamDescription{passes of Laplacian smoothing in the plane}
 ///     \cgalParamDefault{3}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{optimization_rounds}
+///     \cgalParamDescription{rounds of edge flips toward valence 6 and vertex smoothing after the refinement, judged by the triangles' shapes on the surface; no round lowers the smallest angle below the `minimum_angle` bound (`Conformal_remeshing::parameters::optimization_rounds()`)}
+///     \cgalParamDefault{5}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{maximum_scale_ratio}
 ///     \cgalParamDescription{a patch whose largest local scale exceeds its smallest by more than this is bisected (`Conformal_remeshing::parameters::maximum_scale_ratio()`)}
 ///     \cgalParamDefault{1000}
@@ -266,6 +293,11 @@ void for_each_patch(std::size_t n, const Task& task)
 ///   \cgalParamNBegin{progress}
 ///     \cgalParamDescription{a callable `void(const std::string& stage)` told when each stage starts (`Conformal_remeshing::parameters::progress()`)}
 ///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{maximum_running_time}
+///     \cgalParamDescription{a limit in seconds on the wall-clock time of the call, checked between the stages, between the patches and between the Newton iterations of every flow; past it the call throws `Error` with `Error_code::TIME_LIMIT_EXCEEDED` and leaves `output` untouched (`Conformal_remeshing::parameters::maximum_running_time()`)}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{no limit}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 /// The parameters of `segment_into_poly_annuli()` (features, user patches, cutting planes) and of
@@ -279,7 +311,8 @@ void for_each_patch(std::size_t n, const Task& task)
 /// \returns what happened, with times per stage
 /// \throws Error with `Error_code::INVALID_INPUT` when the input is not a valid, manifold,
 ///         orientable triangle mesh or a parameter is out of range, and with the flattening's
-///         code when a patch cannot be flattened even after bisection (the message says why).
+///         code when a patch cannot be flattened even after bisection (the message says why);
+///         with `Error_code::TIME_LIMIT_EXCEEDED` past the `maximum_running_time`.
 template <typename ConcurrencyTag = CGAL::Parallel_if_available_tag, typename TriangleMesh,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& output,
@@ -293,6 +326,7 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
   auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
   const auto progress = choose_parameter(get_parameter(np, internal_np::progress), [](const std::string&) {});
   Remeshing_report report;
+  const internal::Time_limit time_limit = internal::Time_limit::from(np, "remesh_conformal");
 
   // --- parameters and checks ------------------------------------------------------------------
   Clock::time_point start = Clock::now();
@@ -305,6 +339,7 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
   const double min_angle = choose_parameter(get_parameter(np, internal_np::minimum_angle), 28.);
   const double corner = choose_parameter(get_parameter(np, internal_np::corner_angle), 30.);
   const int smoothing = choose_parameter(get_parameter(np, internal_np::smoothing_iterations), 3);
+  const int optimization_rounds = choose_parameter(get_parameter(np, internal_np::optimization_rounds), 5);
   const double maximum_scale_ratio = choose_parameter(get_parameter(np, internal_np::maximum_scale_ratio), 1000.);
   if(!(h > 0.) || !std::isfinite(h))
     throw Error(Error_code::INVALID_INPUT, "remesh_conformal: the target edge length must be positive");
@@ -342,6 +377,7 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
   Poly_annulus_segmentation segmentation;
   segment_into_poly_annuli(input, segmentation, parameters::snap_distance(0.1 * h, np));
   report.seconds_segmentation = seconds_since(start);
+  time_limit.check("after the segmentation");
 
   // --- flattening, with bisection of the patches that fail or stretch too much ------------------
   start = Clock::now();
@@ -361,7 +397,7 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
       try
       {
         patches[p] = extract_patch(segmentation, patch_faces[p]);
-        flattenings[p] = conformal_flatten(patches[p].mesh, flattening_parameters);
+        flattenings[p] = conformal_flatten(patches[p].mesh, parameters::maximum_running_time(time_limit.remaining(), flattening_parameters));
         const Flattening_report& r = flattenings[p].report;
         if(r.status != Error_code::SUCCESS)
           failures[p] = std::string(error_message(r.status)) + " (" + r.embedding.summary() + ")";
@@ -373,6 +409,7 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
         failures[p] = e.what();
       }
     });
+    time_limit.check("while flattening the patches"); // before a patch that ran out of time is bisected
     std::vector<std::size_t> to_bisect;
     for(std::size_t p = 0; p < n; ++p)
       if(!failures[p].empty())
@@ -420,13 +457,16 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
   internal::remeshing::for_each_patch<ConcurrencyTag>(patches.size(), [&](std::size_t p) {
     try
     {
-      remeshed[p] = internal::remeshing::remesh_flattened_patch(flattenings[p], patches[p], samples, h, min_angle, smoothing);
+      time_limit.check("while meshing the patches");
+      remeshed[p] = internal::remeshing::remesh_flattened_patch(flattenings[p], patches[p], samples, h, min_angle, smoothing,
+                                                                      optimization_rounds);
     }
     catch(const Error& e)
     {
       failures[p] = e.what();
     }
   });
+  time_limit.check("while meshing the patches");
   for(std::size_t p = 0; p < patches.size(); ++p)
     if(!failures[p].empty())
       throw Error(Error_code::NOT_AN_EMBEDDING, "remesh_conformal: patch " + std::to_string(p) + ": " + failures[p]);
@@ -434,7 +474,9 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
   for(const auto& r : remeshed)
   {
     report.seconds_planar_meshing += r.seconds_planar_meshing;
+    report.seconds_optimization += r.seconds_optimization;
     report.seconds_pull_back += r.seconds_pull_back;
+    report.optimization_flips += r.flips;
     report.clamped_vertices += r.clamped_vertices;
   }
 
@@ -459,27 +501,36 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
   }
   if(!Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(triangles))
     throw Error(Error_code::NOT_AN_EMBEDDING, "remesh_conformal: the remeshed patches do not glue into a manifold (internal error)");
+  // Only the points some triangle uses become vertices: the curves are sampled before the patches
+  // are meshed, and a sample no patch triangle ends up using must not stay an isolated vertex.
   typedef typename boost::property_traits<decltype(get(CGAL::vertex_point, output))>::value_type Output_point;
+  std::vector<std::size_t> vertex_index(points.size(), 0);
+  std::vector<std::size_t> used_points;
+  for(auto& t : triangles)
+    for(std::size_t& c : t)
+    {
+      if(vertex_index[c] == 0)
+      {
+        used_points.push_back(c);
+        vertex_index[c] = used_points.size();
+      }
+      c = vertex_index[c] - 1;
+    }
   std::vector<Output_point> output_points;
-  output_points.reserve(points.size());
-  for(const Epick::Point_3& p : points)
-    output_points.push_back(Output_point(p.x(), p.y(), p.z()));
+  output_points.reserve(used_points.size());
+  for(std::size_t i : used_points)
+    output_points.push_back(Output_point(points[i].x(), points[i].y(), points[i].z()));
   clear(output);
   Polygon_mesh_processing::polygon_soup_to_polygon_mesh(output_points, triangles, output);
   if(locations != nullptr)
   {
-    // The soup's points become the mesh's vertices in order; a sample no triangle uses is dropped.
+    // The soup's points become the mesh's vertices in order.
     locations->clear();
-    std::vector<char> used(points.size(), 0);
-    for(const auto& t : triangles)
-      for(std::size_t c : t)
-        used[c] = 1;
-    for(std::size_t i = 0; i < points.size(); ++i)
-      if(used[i])
-      {
-        const std::size_t f = segmentation.input_face[point_face[i]];
-        locations->push_back(Surface_location{f, internal::remeshing::barycentric(points[i], input_triangle[f])});
-      }
+    for(std::size_t i : used_points)
+    {
+      const std::size_t f = segmentation.input_face[point_face[i]];
+      locations->push_back(Surface_location{f, internal::remeshing::barycentric(points[i], input_triangle[f])});
+    }
   }
   report.output_vertices = num_vertices(output);
   report.output_faces = num_faces(output);

@@ -7,6 +7,7 @@
 
 #include <CGAL/Conformal_remeshing/check_mesh.h>
 #include <CGAL/Conformal_remeshing/mesh_quality.h>
+#include <CGAL/Conformal_remeshing/verify_remesh.h>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
@@ -19,6 +20,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <functional>
 #include <vector>
 
 namespace remeshing_checks {
@@ -44,6 +46,10 @@ inline void check_topology_and_fidelity(const Mesh& input, const Mesh& output, c
   EXPECT_EQ(out.total_genus(), in.total_genus());
   EXPECT_EQ(out.total_boundary_loops(), in.total_boundary_loops());
   EXPECT_FALSE(CGAL::Polygon_mesh_processing::does_self_intersect(output));
+  // The package's own verifier (exact predicates) agrees.
+  const CR::Remesh_verification verification =
+    CR::verify_remesh(input, output, CR::parameters::vertex_locations(std::cref(locations)));
+  EXPECT_TRUE(verification.is_valid()) << verification.summary();
 
   typedef CGAL::AABB_face_graph_triangle_primitive<Mesh> Primitive;
   typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive> > Tree;
@@ -63,10 +69,25 @@ inline void check_topology_and_fidelity(const Mesh& input, const Mesh& output, c
   EXPECT_LT(worst_location, 1e-9 * diagonal(input));
 }
 
-// Remeshes `input` at 1% of its diagonal with `np` and checks the quality bars (minimum angle,
-// share of triangles below 25 degrees, edge lengths) and `check_topology_and_fidelity()`.
+// The quality bars of issue #5: the smallest angle (20 degrees, or less at input corners), fewer
+// than 1% of the triangles below 25 degrees, a mean equiangle skewness of at most 0.12 and more
+// than 95% of the edges within [0.7, 1.4] x the target length. A test that relaxes one says what
+// is measured (and the user manual's "What holds today" says where the bars are not met yet).
+struct Quality_bars
+{
+  Quality_bars(double min_angle) : min_angle(min_angle) {}
+  Quality_bars& mean_skewness_at_most(double s) { max_mean_skewness = s; return *this; }
+  Quality_bars& edge_share_above(double s) { min_edge_share = s; return *this; }
+
+  double min_angle;
+  double max_mean_skewness = 0.12;
+  double min_edge_share = 0.95;
+};
+
+// Remeshes `input` at 1% of its diagonal with `np` and checks the quality bars and
+// `check_topology_and_fidelity()`.
 template <typename NamedParameters = CGAL::parameters::Default_named_parameters>
-CR::Remeshing_report check_remeshing(const Mesh& input, double min_angle_bound,
+CR::Remeshing_report check_remeshing(const Mesh& input, const Quality_bars& bars,
                                      const NamedParameters& np = CGAL::parameters::default_values(), Mesh* result = nullptr)
 {
   Mesh output;
@@ -77,9 +98,10 @@ CR::Remeshing_report check_remeshing(const Mesh& input, double min_angle_bound,
   EXPECT_NEAR(h, 0.01 * diagonal(input), 1e-12 * diagonal(input));
 
   const CR::Mesh_quality_report q = CR::mesh_quality(output);
-  EXPECT_GE(q.minimum_angle.min, min_angle_bound);
+  EXPECT_GE(q.minimum_angle.min, bars.min_angle);
   EXPECT_LT(q.share_with_minimum_angle_below(25.), 0.01);
-  EXPECT_GT(CR::share_of_edges_with_length_in(output, 0.7 * h, 1.4 * h), 0.95);
+  EXPECT_LE(q.skewness.mean, bars.max_mean_skewness);
+  EXPECT_GT(CR::share_of_edges_with_length_in(output, 0.7 * h, 1.4 * h), bars.min_edge_share);
   check_topology_and_fidelity(input, output, locations);
   if(result != nullptr)
     *result = output;

@@ -112,3 +112,17 @@ endforeach()
 # The remesher refuses polygons and accepts the smallest boundary (a single triangle above).
 conformal_remeshing_add_program_test(remesh_conformal_refuses_polygons PROGRAM remesh_conformal_tool
   ARGS ${hostile}/quad_and_triangle.ply|${verify_dir}/quad.off|--quiet EXIT 1 OUTPUT "invalid input '[^']*': 1 non-triangle face")
+
+# --- time limit: exit code 3, a clear message, and no output file (not even a partial one) ------
+# 1 us runs out while reading; 0.5 s runs out inside the remesher (or, on a loaded machine,
+# earlier): either way nothing is written.
+conformal_remeshing_add_program_test(remesh_conformal_time_limit PROGRAM remesh_conformal_tool
+  ARGS ${PROJECT_SOURCE_DIR}/examples/Conformal_remeshing/data/perforated_plate.off|${verify_dir}/time_limit.off|--time-limit|0.000001|--quiet
+  EXIT 3 OUTPUT "remesh_conformal: the time limit of 1e-06 s \\(--time-limit\\) was exceeded; no output written"
+  NO_FILE ${verify_dir}/time_limit.off)
+conformal_remeshing_add_program_test(remesh_conformal_time_limit_in_the_remesher PROGRAM remesh_conformal_tool
+  ARGS ${PROJECT_SOURCE_DIR}/examples/Conformal_remeshing/data/perforated_plate.off|${verify_dir}/time_limit_2.off|--time-limit|0.5|--quiet
+  EXIT 3 OUTPUT "the time limit of 0.5 s \\(--time-limit\\) was exceeded; no output written \\([^)]*stopped"
+  NO_FILE ${verify_dir}/time_limit_2.off)
+conformal_remeshing_add_program_test(remesh_conformal_bad_time_limit PROGRAM remesh_conformal_tool
+  ARGS ${data}/single_triangle.off|${verify_dir}/x.off|--time-limit|-1 EXIT 2 OUTPUT "bad argument '--time-limit'")

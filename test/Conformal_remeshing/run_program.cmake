@@ -1,11 +1,18 @@
 # Runs a program and checks what it did, for tests of the command-line tools:
 #   cmake -DPROGRAM=exe -DARGS="a|b|c" -DEXPECT_EXIT=N [-DEXPECT_OUTPUT=regex]
-#         [-DJSON_FILE=file -DJSON_CHECKS="path.to.field:OP:value|..."] -P run_program.cmake
+#         [-DJSON_FILE=file -DJSON_CHECKS="path.to.field:OP:value|..."] [-DEXPECT_NO_FILE=file]
+#         -P run_program.cmake
 # OP is EQUAL, LESS, GREATER (numbers) or STREQUAL (strings). A crash (a signal) never matches
 # an expected exit code, so "it failed as it should" cannot pass by crashing.
 string(REPLACE "|" ";" arguments "${ARGS}")
 if(JSON_FILE)
   file(REMOVE "${JSON_FILE}")
+endif()
+if(EXPECT_NO_FILE)
+  file(GLOB stale "${EXPECT_NO_FILE}" "${EXPECT_NO_FILE}.part*")
+  if(stale)
+    file(REMOVE ${stale})
+  endif()
 endif()
 execute_process(COMMAND "${PROGRAM}" ${arguments}
                 RESULT_VARIABLE exit_code OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 600)
@@ -15,6 +22,13 @@ if(NOT "${exit_code}" STREQUAL "${EXPECT_EXIT}")
 endif()
 if(DEFINED EXPECT_OUTPUT AND NOT "${out}${err}" MATCHES "${EXPECT_OUTPUT}")
   message(FATAL_ERROR "the output does not match '${EXPECT_OUTPUT}'")
+endif()
+if(EXPECT_NO_FILE)
+  # A failed run leaves no partial output: neither the file nor its temporary.
+  file(GLOB left "${EXPECT_NO_FILE}" "${EXPECT_NO_FILE}.part*")
+  if(left)
+    message(FATAL_ERROR "files left behind: ${left}")
+  endif()
 endif()
 
 if(JSON_FILE)

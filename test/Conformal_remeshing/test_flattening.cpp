@@ -9,6 +9,7 @@
 
 #include <CGAL/Delaunay_triangulation_2.h>
 #include <CGAL/Random.h>
+#include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/generators.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -418,4 +419,28 @@ TEST(ConformalFlatten, BadInputIsRefusedWithTheReason)
   bowtie.add_face(c, bowtie.add_vertex(K::Point_3(1, 0, 0)), bowtie.add_vertex(K::Point_3(1, 1, 0)));
   bowtie.add_face(c, bowtie.add_vertex(K::Point_3(-1, 0, 0)), bowtie.add_vertex(K::Point_3(-1, -1, 0)));
   expect_error(bowtie, "non-manifold vertex");
+}
+
+// A maximum edge length meant for another scale (1e-4 on a unit tetrahedron: some 10^8 splits)
+// is refused once a million splits have not sufficed, not worked on until memory runs out.
+TEST(ConformalFlatten, AMaximumEdgeLengthFarTooSmallIsRefused)
+{
+  Mesh open_tetrahedron;
+  CGAL::make_tetrahedron(K::Point_3(0, 0, 0), K::Point_3(1, 0, 0), K::Point_3(0, 1, 0), K::Point_3(0, 0, 1), open_tetrahedron);
+  CGAL::Euler::remove_face(halfedge(*open_tetrahedron.faces().begin(), open_tetrahedron), open_tetrahedron);
+  open_tetrahedron.collect_garbage();
+  try
+  {
+    CR::conformal_flatten(open_tetrahedron, CR::parameters::maximum_edge_length(1e-4));
+    ADD_FAILURE() << "no error";
+  }
+  catch(const CR::Error& e)
+  {
+    EXPECT_EQ(e.code(), CR::Error_code::INVALID_INPUT);
+    EXPECT_NE(std::string(e.what()).find("a maximum_edge_length of 0.0001 needs more than 1000000 edge splits"),
+              std::string::npos) << e.what();
+  }
+  // A sensible length is accepted.
+  EXPECT_EQ(CR::conformal_flatten(open_tetrahedron, CR::parameters::maximum_edge_length(0.1)).report.status,
+            CR::Error_code::SUCCESS);
 }

@@ -14,6 +14,7 @@
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <complex>
 #include <iostream>
@@ -21,6 +22,7 @@
 #include <random>
 #include <set>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace CR = CGAL::Conformal_remeshing;
@@ -715,4 +717,112 @@ TEST(RicciFlow, MultiprecisionFlow)
   ASSERT_TRUE(rd.converged);
   for(std::size_t v = 0; v < k.size(); ++v)
     EXPECT_NEAR(static_cast<double>(r.conformal_factors[v]), rd.conformal_factors[v], 1e-9);
+}
+
+// Issue #8: a flow that does not converge returns its best state with NOT_CONVERGED.
+TEST(RicciFlow, NonConvergenceReturnsTheBestState)
+{
+  const Soup s = cad_sliver_disc(20, 61, 0.4, 0.15); // converges in 7 iterations
+  for(const bool exact_path : {false, true})
+  {
+    SCOPED_TRACE(exact_path ? "exact conformal path" : "flips after each step");
+    Tri t = from_soup(s);
+    const std::vector<double> targets = CR::disc_flattening_targets(t);
+    std::vector<double> seen;
+    auto r = CR::discrete_ricci_flow(t, targets, CR::parameters::exact_conformal_path(exact_path,
+        CGAL::parameters::number_of_iterations(2).callback([&](int, double e) { seen.push_back(e); })));
+    EXPECT_EQ(r.status, CR::Error_code::NOT_CONVERGED);
+    EXPECT_FALSE(r.converged);
+    EXPECT_EQ(r.iterations, 2);
+    ASSERT_EQ(seen.size(), 3u);
+    EXPECT_EQ(r.max_curvature_error, *std::min_element(seen.begin(), seen.end()));
+    EXPECT_LE(r.max_curvature_error, seen.front());
+    // The returned metric is valid, Delaunay, and has the reported error.
+    EXPECT_TRUE(t.is_valid());
+    EXPECT_TRUE(t.is_delaunay());
+    ASSERT_EQ(r.target_curvatures.size(), std::size_t(t.number_of_vertices()));
+    ASSERT_EQ(r.conformal_factors.size(), std::size_t(t.number_of_vertices()));
+    // (flips keep the metric; the curvatures of the flipped triangles differ by rounding)
+    EXPECT_NEAR(max_abs_diff(t.vertex_curvatures(), r.target_curvatures), r.max_curvature_error, 1e-12);
+    EXPECT_EQ(r.number_of_flips, t.number_of_flips());
+    if(exact_path)
+    {
+      // The path-following steps raise the error first (1.5 -> 5.9 -> 2.3 here): the initial
+      // state is the best, and it comes back exactly, with a correspondence that still works.
+      EXPECT_GT(seen[1], seen[0]);
+      EXPECT_EQ(r.best_iteration, 0);
+      EXPECT_NE(r.message.find("lowest curvature error"), std::string::npos) << r.message;
+      Tri initial = from_soup(s);
+      CR::discrete_ricci_flow(initial, targets, CGAL::parameters::number_of_iterations(0));
+      EXPECT_EQ(t.edge_lengths(), initial.edge_lengths());
+      EXPECT_EQ(t.number_of_flips(), initial.number_of_flips());
+      for(double u : r.conformal_factors)
+        EXPECT_EQ(u, 0.);
+      for(int f = 0; f < t.number_of_faces(); f += 7)
+      {
+        const Tri::Face_location p{f, {{0.2, 0.3, 0.5}}};
+        const Tri::Face_location back = t.from_input(t.to_input(p));
+        ASSERT_EQ(back.face, f);
+        EXPECT_NEAR(back.coordinates[2], 0.5, 1e-12);
+      }
+    }
+    else
+    {
+      EXPECT_LT(seen[2], seen[1]); // Newton steps with flips lower the error: the last state is the best
+      EXPECT_EQ(r.best_iteration, 2);
+    }
+  }
+}
+
+TEST(RicciFlow, TimeLimit)
+{
+  const Soup s = cad_sliver_disc(20, 61, 0.4, 0.15);
+  {
+    // No time at all: stopped before the first iteration, the metric untouched and valid.
+    Tri t = from_soup(s);
+    int calls = 0;
+    try
+    {
+      CR::discrete_ricci_flow(t, CR::disc_flattening_targets(t),
+                              CR::parameters::maximum_running_time(0., CGAL::parameters::callback([&](int, double) { ++calls; })));
+      FAIL() << "no exception";
+    }
+    catch(const CR::Error& e)
+    {
+      EXPECT_EQ(e.code(), CR::Error_code::TIME_LIMIT_EXCEEDED);
+      EXPECT_NE(std::string(e.what()).find("discrete_ricci_flow: stopped after 0 Newton iterations"), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("time limit of 0 s (maximum_running_time) was exceeded"), std::string::npos) << e.what();
+    }
+    EXPECT_EQ(calls, 1);
+    EXPECT_TRUE(t.is_valid());
+  }
+  {
+    // The limit passes during the flow (each iteration made slow): the best state is kept.
+    Tri t = from_soup(s);
+    const std::vector<double> targets = CR::disc_flattening_targets(t);
+    std::vector<double> seen;
+    EXPECT_THROW(CR::discrete_ricci_flow(t, targets, CR::parameters::maximum_running_time(0.05,
+                   CGAL::parameters::callback([&](int, double e) {
+                     seen.push_back(e);
+                     std::this_thread::sleep_for(std::chrono::milliseconds(30));
+                   }))), CR::Error);
+    ASSERT_FALSE(seen.empty());
+    ASSERT_EQ(targets.size(), std::size_t(t.number_of_vertices()));
+    EXPECT_TRUE(t.is_valid());
+    EXPECT_NEAR(max_abs_diff(t.vertex_curvatures(), targets), *std::min_element(seen.begin(), seen.end()), 1e-12);
+  }
+  {
+    Tri t = from_soup(s);
+    EXPECT_TRUE(CR::discrete_ricci_flow(t, CR::disc_flattening_targets(t), CR::parameters::maximum_running_time(1e6)).converged);
+    try
+    {
+      CR::discrete_ricci_flow(t, CR::disc_flattening_targets(t), CR::parameters::maximum_running_time(-1.));
+      FAIL() << "no exception";
+    }
+    catch(const CR::Error& e)
+    {
+      EXPECT_EQ(e.code(), CR::Error_code::INVALID_INPUT);
+      EXPECT_NE(std::string(e.what()).find("maximum running time"), std::string::npos) << e.what();
+    }
+  }
 }

@@ -27,7 +27,8 @@ enum class Error_code
   NOT_CONVERGED,          ///< an iterative solver stopped before reaching its tolerance
   LINEAR_SOLVER_FAILED,   ///< a sparse factorization or solve failed
   DEGENERATE_METRIC,      ///< edge lengths violate the triangle inequality
-  NOT_AN_EMBEDDING        ///< a planar image folds or overlaps (found with exact predicates)
+  NOT_AN_EMBEDDING,       ///< a planar image folds or overlaps (found with exact predicates)
+  TIME_LIMIT_EXCEEDED     ///< the call ran longer than its `maximum_running_time`
 };
 
 /// \ingroup PkgConformalRemeshingRef
@@ -45,6 +46,7 @@ inline const char* error_message(Error_code code)
     case Error_code::LINEAR_SOLVER_FAILED: return "sparse linear solver failed";
     case Error_code::DEGENERATE_METRIC: return "edge lengths violate the triangle inequality";
     case Error_code::NOT_AN_EMBEDDING: return "the planar image is not an embedding";
+    case Error_code::TIME_LIMIT_EXCEEDED: return "the time limit was exceeded";
   }
   return "unknown error";
 }

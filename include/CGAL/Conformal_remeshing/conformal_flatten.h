@@ -13,6 +13,7 @@
 #include <CGAL/Conformal_remeshing/check_planar_embedding.h>
 #include <CGAL/Conformal_remeshing/discrete_ricci_flow.h>
 #include <CGAL/Conformal_remeshing/internal/named_parameters.h>
+#include <CGAL/Conformal_remeshing/internal/time_limit.h>
 #include <CGAL/Conformal_remeshing/internal/welding/weld.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -25,6 +26,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -265,12 +267,22 @@ inline std::vector<std::vector<int> > region_boundary_loops(const Intrinsic_tria
 ///     \cgalParamDescription{the flow stops when the curvature error is below it (`Conformal_remeshing::parameters::curvature_tolerance()`)}
 ///     \cgalParamDefault{1e-10}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{maximum_running_time}
+///     \cgalParamDescription{a limit in seconds on the wall-clock time of the call, checked between the stages and between the Newton iterations of the flow (`Conformal_remeshing::parameters::maximum_running_time()`)}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{no limit}
+///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
 /// \returns the flattening; `report.status` says whether the flow converged and the result is
 ///          an embedding. A result that is not an embedding is never returned as a success.
+///          A flow that does not converge leaves the best state it reached (the lowest curvature
+///          error), which is laid out and checked like a converged one.
 /// \throws Error with `Error_code::INVALID_INPUT` when the mesh is not a valid triangle mesh, not
-///         connected, not of genus 0, or has no boundary; the message names the problem.
+///         connected, not of genus 0, or has no boundary, or when `maximum_edge_length` is so small
+///         that more than max(10^6, 20 n) splits would be needed (n vertices); the message names
+///         the problem. With
+///         `Error_code::TIME_LIMIT_EXCEEDED` when the call runs longer than `maximum_running_time`.
 template <typename TriangleMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Conformal_flattening conformal_flatten(const TriangleMesh& mesh,
                                        const NamedParameters& np = CGAL::parameters::default_values())
@@ -280,6 +292,7 @@ Conformal_flattening conformal_flatten(const TriangleMesh& mesh,
   typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
   typedef std::chrono::steady_clock Clock;
   auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
+  const internal::Time_limit time_limit = internal::Time_limit::from(np, "conformal_flatten");
 
   // --- the input must be a patch: valid, connected, genus 0, with a boundary ----------------
   const Mesh_check_report checks = check_mesh(mesh, np);
@@ -295,6 +308,7 @@ Conformal_flattening conformal_flatten(const TriangleMesh& mesh,
                                              + "; a patch must have genus 0 (cut its handles first)");
   if(checks.components[0].boundary_loops == 0)
     throw Error(Error_code::INVALID_INPUT, "conformal_flatten: the mesh is closed; a patch needs at least one boundary loop");
+  time_limit.check("after the input checks");
 
   const Clock::time_point start = Clock::now();
   auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(vertex_point, mesh));
@@ -309,6 +323,20 @@ Conformal_flattening conformal_flatten(const TriangleMesh& mesh,
   internal::welding::Indexed_patch& patch = result.patch;
   patch = internal::welding::make_indexed_patch(mesh, vpm, vim, fim);
   report.boundary_loops = patch.boundary_loops.size();
+  // Valid coordinates can still be out of range for the lengths and areas the flow computes
+  // (their squares overflow or underflow): say so rather than fail on a zero length later.
+  for(const auto& f : patch.faces)
+    for(int c = 0; c < 3; ++c)
+    {
+      const double length = internal::welding::distance(patch.points[f[c]], patch.points[f[(c + 1) % 3]]);
+      if(!(length >= 1e-125 && length <= 1e125))
+      {
+        std::ostringstream os;
+        os << "conformal_flatten: an edge length of " << length
+           << " is out of the range of the flow's double precision computations (1e-125 to 1e125); scale the mesh";
+        throw Error(Error_code::INVALID_INPUT, os.str());
+      }
+    }
 
   // The loop to weld: the one of the given border halfedge, or the longest.
   std::size_t welded = 0;
@@ -336,7 +364,18 @@ Conformal_flattening conformal_flatten(const TriangleMesh& mesh,
   const std::size_t points_before = patch.points.size();
   const double maximum_length = choose_parameter(get_parameter(np, internal_np::maximum_edge_length), 0.);
   if(maximum_length > 0. && !planar)
-    patch.split_long_edges(maximum_length);
+  {
+    // A maximum far below the mesh's edge lengths would split without end in sight: give up
+    // past a number of new vertices no sensible length needs.
+    const std::size_t split_limit = (std::max)(std::size_t(1000000), 20 * patch.points.size());
+    if(!patch.split_long_edges(maximum_length, split_limit))
+    {
+      std::ostringstream os;
+      os << "conformal_flatten: a maximum_edge_length of " << maximum_length << " needs more than " << split_limit
+         << " edge splits on this mesh; give a length closer to its edge lengths";
+      throw Error(Error_code::INVALID_INPUT, os.str());
+    }
+  }
   report.edge_splits = patch.points.size() - points_before;
   if(!planar)
     patch.split_long_boundary_edges(welded, patch.loop_length(patch.boundary_loops[welded]) / 32.);
@@ -371,6 +410,7 @@ Conformal_flattening conformal_flatten(const TriangleMesh& mesh,
           tri.set_unflippable(tri.edge(f, c));
   }
   report.seconds_welding = seconds_since(start);
+  time_limit.check("after the welding");
 
   // --- the flow: flat everywhere, convex free boundary ----------------------------------------
   // The welded disc's only boundary is the annulus' inner circle.
@@ -378,16 +418,33 @@ Conformal_flattening conformal_flatten(const TriangleMesh& mesh,
   Ricci_flow_result<double> flow;
   if(planar)
   {
+    flow.status = Error_code::SUCCESS;
     flow.converged = true;
     flow.conformal_factors.assign(tri.number_of_vertices(), 0.);
   }
   else
-    flow = discrete_ricci_flow(
-      tri, disc_flattening_targets(tri),
-      parameters::curvature_tolerance(
-        choose_parameter(get_parameter(np, internal_np::curvature_tolerance), 1e-10),
-        CGAL::parameters::number_of_iterations(choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 50))));
+  {
+    try
+    {
+      flow = discrete_ricci_flow(
+        tri, disc_flattening_targets(tri),
+        parameters::maximum_running_time(
+          time_limit.remaining(),
+          parameters::curvature_tolerance(
+            choose_parameter(get_parameter(np, internal_np::curvature_tolerance), 1e-10),
+            CGAL::parameters::number_of_iterations(
+              choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 50)))));
+    }
+    catch(const Error& e)
+    {
+      // The flow's message counts from its own start: say it with this call's limit.
+      if(e.code() == Error_code::TIME_LIMIT_EXCEEDED)
+        time_limit.check("during the Ricci flow");
+      throw;
+    }
+  }
   report.seconds_flow = seconds_since(flow_start);
+  time_limit.check("after the Ricci flow");
   report.converged = flow.converged;
   report.iterations = flow.iterations;
   report.curvature_error = flow.max_curvature_error;
@@ -407,6 +464,7 @@ Conformal_flattening conformal_flatten(const TriangleMesh& mesh,
                                                                                      : Welded_region::ANNULUS;
   }
   const std::vector<Intrinsic_triangulation<double>::Point_2> positions = tri.layout();
+  time_limit.check("after the layout");
   result.layout.reserve(positions.size());
   for(const auto& p : positions)
     result.layout.push_back(Epick::Point_2(p[0], p[1]));

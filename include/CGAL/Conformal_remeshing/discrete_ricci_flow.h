@@ -12,6 +12,7 @@
 #include <CGAL/Conformal_remeshing/Intrinsic_triangulation.h>
 #include <CGAL/Conformal_remeshing/internal/ricci_flow/lobachevsky.h>
 #include <CGAL/Conformal_remeshing/internal/ricci_flow/triangle_geometry.h>
+#include <CGAL/Conformal_remeshing/internal/time_limit.h>
 
 #include <CGAL/Named_function_parameters.h>
 
@@ -51,12 +52,17 @@ namespace Conformal_remeshing {
 template <typename FT>
 struct Ricci_flow_result
 {
+  /// `SUCCESS` if the flow converged; `NOT_CONVERGED` if it stopped above the tolerance (too
+  /// few iterations, or a line search that found no step), in which case the triangulation holds
+  /// the best state seen: the one of the lowest curvature error
+  Error_code status = Error_code::NOT_CONVERGED;
   bool converged = false;           ///< max |K̄ - K| fell below the tolerance
   int iterations = 0;               ///< Newton iterations
+  int best_iteration = 0;           ///< the iteration whose state is returned (`iterations` unless the flow stopped in a worse state)
   int number_of_factorizations = 0; ///< numeric factorizations of the Hessian (the other iterations reuse one as a preconditioner)
-  FT max_curvature_error = FT(0);   ///< final max over vertices of |K̄ - K|
-  std::size_t number_of_flips = 0;  ///< edge flips performed by this call
-  std::size_t number_of_splits = 0; ///< edge splits performed by this call (each adds one vertex)
+  FT max_curvature_error = FT(0);   ///< max over vertices of |K̄ - K| in the returned state
+  std::size_t number_of_flips = 0;  ///< edge flips from the input to the returned state
+  std::size_t number_of_splits = 0; ///< edge splits from the input to the returned state (each adds one vertex)
   std::vector<FT> target_curvatures; ///< the targets of all vertices, including those added by splits (0)
   std::vector<FT> conformal_factors; ///< u per vertex, accumulated over the call (u[0] = 0; a vertex added by a split starts at 0)
   double seconds_flips = 0;         ///< time in flips to Delaunay
@@ -171,11 +177,20 @@ double ricci_energy(const Intrinsic_triangulation<FT>& tri, const std::vector<FT
 ///     (default 0.9&pi;; &pi; or more disables splitting)
 ///   - `CGAL::Conformal_remeshing::parameters::exact_conformal_path(b)`: path-following line
 ///     search, path-independent result (default `false`)
+///   - `CGAL::Conformal_remeshing::parameters::maximum_running_time(s)`: a limit in seconds on
+///     the wall-clock time of the call, checked before each Newton iteration (default: none)
 ///
-/// \throws Error with `Error_code::INVALID_INPUT` if the target vector has the wrong size;
-///         with `Error_code::GAUSS_BONNET_VIOLATED` (before any iteration or flip) if the targets
-///         do not sum to 2&pi;&chi;; with `Error_code::DEGENERATE_METRIC` if the input metric is
-///         not valid; with `Error_code::LINEAR_SOLVER_FAILED` if a factorization fails.
+/// A flow that stops above the tolerance (after `number_of_iterations`, or when the line search
+/// finds no acceptable step) leaves `tri` in the best state it reached, the one with the lowest
+/// curvature error, and reports `Error_code::NOT_CONVERGED` in `Ricci_flow_result::status`.
+///
+/// \throws Error with `Error_code::INVALID_INPUT` if the target vector has the wrong size or the
+///         maximum running time is negative; with `Error_code::GAUSS_BONNET_VIOLATED` (before
+///         any iteration or flip) if the targets do not sum to 2&pi;&chi;; with
+///         `Error_code::DEGENERATE_METRIC` if the input metric is not valid; with
+///         `Error_code::LINEAR_SOLVER_FAILED` if a factorization fails; with
+///         `Error_code::TIME_LIMIT_EXCEEDED` when the maximum running time has passed before an
+///         iteration (`tri` then holds the best state reached, like after non-convergence).
 ///         Non-convergence is reported in the result, not thrown.
 template <typename FT, typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Ricci_flow_result<FT> discrete_ricci_flow(Intrinsic_triangulation<FT>& tri,
@@ -204,6 +219,7 @@ Ricci_flow_result<FT> discrete_ricci_flow(Intrinsic_triangulation<FT>& tri,
   const FT split_angle = choose_parameter(get_parameter(np, internal_np::edge_split_angle), FT(9) * pi / FT(10));
   const std::function<void(int, double)> callback =
       choose_parameter(get_parameter(np, CGAL::internal_np::callback), std::function<void(int, double)>());
+  const internal::Time_limit time_limit = internal::Time_limit::from(np, "discrete_ricci_flow");
 
   if(static_cast<int>(target_curvature.size()) != tri.number_of_vertices())
     throw Error(Error_code::INVALID_INPUT, "discrete_ricci_flow: expected " + std::to_string(tri.number_of_vertices()) +
@@ -278,6 +294,7 @@ Ricci_flow_result<FT> discrete_ricci_flow(Intrinsic_triangulation<FT>& tri,
       }
       if(todo.empty())
         break;
+      const std::size_t splits_before = result.number_of_splits;
       for(int e : todo)
         if(tri.split_edge(e) >= 0)
         {
@@ -285,6 +302,9 @@ Ricci_flow_result<FT> discrete_ricci_flow(Intrinsic_triangulation<FT>& tri,
           target.push_back(FT(0));
           result.conformal_factors.push_back(FT(0));
         }
+      // A split refused by rounding (a sliver too thin to split) would be tried forever.
+      if(result.number_of_splits == splits_before)
+        break;
       result.number_of_flips += tri.make_delaunay();
     }
     update_angle_sums();
@@ -472,8 +492,36 @@ Ricci_flow_result<FT> discrete_ricci_flow(Intrinsic_triangulation<FT>& tri,
     return reached;
   };
 
+  // The best state seen (lowest curvature error) is what a flow that stops above the tolerance
+  // returns. Newton steps mostly lower the error, so the state is copied only when a step leaves
+  // it for one that is not better; while no copy is held, the current state is the best.
+  FT best_error = error;
+  bool best_saved = false;
+  Intrinsic_triangulation<FT> best_tri;
+  std::vector<FT> best_factors, best_target;
+  std::size_t best_flips = 0, best_splits = 0;
+  auto restore_best = [&]() {
+    if(!best_saved || !(best_error < error))
+      return false;
+    tri = std::move(best_tri);
+    result.conformal_factors.swap(best_factors);
+    target.swap(best_target);
+    result.number_of_flips = best_flips;
+    result.number_of_splits = best_splits;
+    error = best_error;
+    result.max_curvature_error = error;
+    best_saved = false;
+    return true;
+  };
+
   for(;;)
   {
+    if(!best_saved || error < best_error)
+    {
+      best_error = error;
+      best_saved = false;
+      result.best_iteration = result.iterations;
+    }
     result.max_curvature_error = error;
     if(callback)
       callback(result.iterations, static_cast<double>(error));
@@ -487,6 +535,12 @@ Ricci_flow_result<FT> discrete_ricci_flow(Intrinsic_triangulation<FT>& tri,
     {
       result.message = "maximum number of iterations reached";
       break;
+    }
+    if(time_limit.exceeded())
+    {
+      restore_best();
+      time_limit.check("after " + std::to_string(result.iterations) + " Newton iterations (curvature error "
+                       + std::to_string(static_cast<double>(error)) + ")");
     }
     ++result.iterations;
     const int nv = tri.number_of_vertices();
@@ -632,6 +686,18 @@ Ricci_flow_result<FT> discrete_ricci_flow(Intrinsic_triangulation<FT>& tri,
       const bool rounding = std::abs(slope) < 1e-12 * (1. + std::abs(e0));
       if(armijo || (rounding && trial_norm2 < gnorm2))
       {
+        if(!best_saved && !(trial_error < best_error))
+        {
+          // Leaving the best state for one that is not better: keep it to come back to.
+          best_tri = tri;
+          if(!on_path)
+            best_tri.set_edge_lengths(l0);
+          best_factors = result.conformal_factors;
+          best_target = target;
+          best_flips = result.number_of_flips;
+          best_splits = result.number_of_splits;
+          best_saved = true;
+        }
         accepted = true;
         accepted_step = step;
         g.swap(g_trial);
@@ -689,6 +755,11 @@ Ricci_flow_result<FT> discrete_ricci_flow(Intrinsic_triangulation<FT>& tri,
       }
     }
   }
+  if(result.converged)
+    result.status = Error_code::SUCCESS;
+  else if(restore_best())
+    result.message += "; the state of iteration " + std::to_string(result.best_iteration)
+                      + ", with the lowest curvature error, is returned";
   result.seconds_total = seconds(start);
   return result;
 }

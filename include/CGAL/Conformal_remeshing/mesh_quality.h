@@ -23,6 +23,7 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <iterator>
 #include <limits>
 #include <vector>
 
@@ -198,9 +199,11 @@ Mesh_quality_report mesh_quality(const TriangleMesh& mesh,
     throw Error(Error_code::INVALID_INPUT, "mesh_quality() needs a triangle mesh; triangulate the faces first");
 
   Mesh_quality_report report;
-  report.number_of_vertices = num_vertices(mesh);
-  report.number_of_edges = num_edges(mesh);
-  report.number_of_faces = num_faces(mesh);
+  // Counted by iteration: num_vertices() of a Surface_mesh also counts removed elements until its
+  // garbage is collected (as after isotropic_remeshing()).
+  report.number_of_vertices = static_cast<std::size_t>(std::distance(vertices(mesh).begin(), vertices(mesh).end()));
+  report.number_of_edges = static_cast<std::size_t>(std::distance(edges(mesh).begin(), edges(mesh).end()));
+  report.number_of_faces = static_cast<std::size_t>(std::distance(faces(mesh).begin(), faces(mesh).end()));
 
   // Running minimum, maximum and sum of one per-triangle quantity.
   struct Accumulator
@@ -249,7 +252,7 @@ Mesh_quality_report mesh_quality(const TriangleMesh& mesh,
   }
 
   std::vector<double> lengths;
-  lengths.reserve(num_edges(mesh));
+  lengths.reserve(report.number_of_edges);
   for(auto e : edges(mesh))
   {
     const auto h = halfedge(e, mesh);

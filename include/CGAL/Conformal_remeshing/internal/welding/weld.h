@@ -90,9 +90,11 @@ struct Indexed_patch
 
   /// Splits every edge longer than `max_length` at its midpoint, longest first, until none is
   /// left: the input's long CAD slivers become chains of shorter triangles on the same surface,
-  /// so that the map, affine in each triangle, can follow the conformal factor.
-  void split_long_edges(double max_length)
+  /// so that the map, affine in each triangle, can follow the conformal factor. Returns false
+  /// (the patch then half split, to be dropped) as soon as more than `max_splits` are needed.
+  bool split_long_edges(double max_length, std::size_t max_splits)
   {
+    const std::size_t points_before = points.size();
     Edge_faces face_of = directed_edge_faces();
     std::map<int, int> loop_next; // along the boundary loops
     for(const auto& loop : boundary_loops)
@@ -116,6 +118,8 @@ struct Indexed_patch
         // The edge may have been split already in this round.
         if(!face_of.count({a, b}) && !face_of.count({b, a}))
           continue;
+        if(points.size() - points_before >= max_splits)
+          return false;
         const int m = split_edge(a, b, face_of);
         for(const std::pair<int, int>& border : {std::make_pair(a, b), std::make_pair(b, a)})
         {
@@ -135,6 +139,7 @@ struct Indexed_patch
       for(int v = loop_next.at(start); v != start; v = loop_next.at(v))
         loop.push_back(v);
     }
+    return true;
   }
 
 private:
