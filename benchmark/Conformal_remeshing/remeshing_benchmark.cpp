@@ -14,11 +14,10 @@
 #include "cad_like_models.h"
 #include "test_surfaces.h"
 #include "generated_patches.h"
+#include "isotropic_peer.h"
 #include "timing.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <CGAL/Polygon_mesh_processing/detect_features.h>
-#include <CGAL/Polygon_mesh_processing/remesh.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
@@ -32,7 +31,6 @@
 
 namespace CR = CGAL::Conformal_remeshing;
 namespace bm = CGAL::Conformal_remeshing::benchmarks;
-namespace PMP = CGAL::Polygon_mesh_processing;
 typedef CGAL::Epick K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 
@@ -132,13 +130,7 @@ int main(int argc, char** argv)
     Mesh peer;
     const double peer_seconds = bm::median_seconds([&] {
       peer = input;
-      auto constrained = peer.add_property_map<Mesh::Edge_index, bool>("e:constrained", false).first;
-      PMP::detect_sharp_edges(peer, 60., constrained);
-      for(auto e : peer.edges())
-        if(peer.is_border(e))
-          constrained[e] = true;
-      PMP::isotropic_remeshing(faces(peer), h, peer,
-                               CGAL::parameters::number_of_iterations(5).edge_is_constrained_map(constrained));
+      bm::run_isotropic_peer(peer, h);
     });
     const Measure a = measure(input, ours, h, ours_seconds), b = measure(input, peer, h, peer_seconds);
     print_row(models[k].first, "conformal", a);
