@@ -276,7 +276,9 @@ Ricci_flow_result<FT> discrete_ricci_flow(Intrinsic_triangulation<FT>& tri,
   auto restore_delaunay = [&]() {
     const Clock::time_point t0 = Clock::now();
     result.number_of_flips += tri.make_delaunay();
-    while(split_angle < pi && result.number_of_splits < max_splits)
+    // Each round of splits is followed by flips; the time limit is also checked between rounds
+    // (the caller's Newton loop then stops with TIME_LIMIT_EXCEEDED).
+    while(split_angle < pi && result.number_of_splits < max_splits && !time_limit.exceeded())
     {
       std::vector<int> todo;
       for(int e = 0; e < tri.number_of_edges(); ++e)
