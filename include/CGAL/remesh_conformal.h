@@ -168,22 +168,26 @@ inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, c
     throw Error(Error_code::NOT_AN_EMBEDDING, "remesh_conformal: the boundary samples of a patch overlap in the plane");
   result.seconds_planar_meshing = std::chrono::duration<double>(Clock::now() - start).count();
 
-  // Flips and moves judged on the surface (see surface_optimization.h).
+  // Flips and moves judged on the surface (see surface_optimization.h). The surface positions are
+  // the optimizer's working state only: the pull-back below locates the final points again, for
+  // their input faces.
   start = Clock::now();
-  const auto lift = [&](const Epick::Point_2& p) {
-    const Planar_locator::Location l = locator.locate(p);
-    return flat.to_surface(l.triangle, l.coordinates).point;
-  };
-  std::vector<Epick::Point_3> positions;
-  positions.reserve(planar.points.size());
-  for(const auto& loop : loops)
-    for(const Boundary_sample& s : loop)
-      positions.push_back(s.point);
-  for(std::size_t i = planar.number_of_samples; i < planar.points.size(); ++i)
-    positions.push_back(lift(planar.points[i]));
-  const Surface_optimization_report optimization = optimize_on_surface(
-    planar.points, positions, planar.triangles, planar.number_of_samples, lift, min_angle, 1.4 * h, optimization_rounds);
-  result.flips = optimization.flips;
+  if(optimization_rounds > 0)
+  {
+    const auto lift = [&](const Epick::Point_2& p) {
+      const Planar_locator::Location l = locator.locate(p);
+      return flat.to_surface(l.triangle, l.coordinates).point;
+    };
+    std::vector<Epick::Point_3> positions;
+    positions.reserve(planar.points.size());
+    for(const auto& loop : loops)
+      for(const Boundary_sample& s : loop)
+        positions.push_back(s.point);
+    for(std::size_t i = planar.number_of_samples; i < planar.points.size(); ++i)
+      positions.push_back(lift(planar.points[i]));
+    result.flips = optimize_on_surface(planar.points, positions, planar.triangles, planar.number_of_samples, lift,
+                                       min_angle, 1.4 * h, optimization_rounds).flips;
+  }
   result.seconds_optimization = std::chrono::duration<double>(Clock::now() - start).count();
 
   start = Clock::now();

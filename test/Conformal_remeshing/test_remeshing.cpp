@@ -8,6 +8,7 @@
 
 #include "remeshing_checks.h"
 #include "test_surfaces.h"
+#include "expect_error.h"
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
@@ -258,17 +259,7 @@ TEST(RemeshConformal, TimeLimit)
   Mesh mesh;
   bm::make_spherical_cap(mesh, 90., 8, 24);
   auto expect_time_limit = [](const auto& run, const std::string& message) {
-    try
-    {
-      run();
-      ADD_FAILURE() << "no exception";
-    }
-    catch(const CR::Error& e)
-    {
-      EXPECT_EQ(e.code(), CR::Error_code::TIME_LIMIT_EXCEEDED) << e.what();
-      EXPECT_NE(std::string(e.what()).find(message), std::string::npos) << e.what();
-      EXPECT_NE(std::string(e.what()).find("(maximum_running_time) was exceeded"), std::string::npos) << e.what();
-    }
+    test_support::expect_error(run, CR::Error_code::TIME_LIMIT_EXCEEDED, {message, "(maximum_running_time) was exceeded"});
   };
   Mesh output;
   CGAL::make_triangle(K::Point_3(0, 0, 0), K::Point_3(1, 0, 0), K::Point_3(0, 1, 0), output);
@@ -296,13 +287,6 @@ TEST(RemeshConformal, TimeLimit)
   CR::remesh_conformal(mesh, limited, CR::parameters::maximum_running_time(3600., CR::parameters::relative_target_edge_length(0.05)));
   CR::remesh_conformal(mesh, unlimited, CR::parameters::relative_target_edge_length(0.05));
   EXPECT_EQ(limited.number_of_faces(), unlimited.number_of_faces());
-  try
-  {
-    CR::remesh_conformal(mesh, output, CR::parameters::maximum_running_time(-1.));
-    ADD_FAILURE() << "no exception";
-  }
-  catch(const CR::Error& e)
-  {
-    EXPECT_EQ(e.code(), CR::Error_code::INVALID_INPUT);
-  }
+  test_support::expect_error([&] { CR::remesh_conformal(mesh, output, CR::parameters::maximum_running_time(-1.)); },
+                             CR::Error_code::INVALID_INPUT);
 }

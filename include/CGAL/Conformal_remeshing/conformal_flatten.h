@@ -281,8 +281,8 @@ inline std::vector<std::vector<int> > region_boundary_loops(const Intrinsic_tria
 /// \throws Error with `Error_code::INVALID_INPUT` when the mesh is not a valid triangle mesh, not
 ///         connected, not of genus 0, or has no boundary, or when `maximum_edge_length` is so small
 ///         that more than max(10^6, 20 n) splits would be needed (n vertices); the message names
-///         the problem. With
-///         `Error_code::TIME_LIMIT_EXCEEDED` when the call runs longer than `maximum_running_time`.
+///         the problem. With `Error_code::TIME_LIMIT_EXCEEDED` when the call runs longer than
+///         `maximum_running_time`.
 template <typename TriangleMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Conformal_flattening conformal_flatten(const TriangleMesh& mesh,
                                        const NamedParameters& np = CGAL::parameters::default_values())
