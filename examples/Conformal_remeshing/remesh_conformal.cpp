@@ -3,7 +3,7 @@
 //   remesh_conformal IN OUT [--target-edge-length L | --relative-edge-length R] [--min-angle DEG]
 //                    [--features-angle DEG] [--patches FILE] [--cut-plane a,b,c,d]...
 //                    [--save-patches DIR] [--sequential] [--report FILE.json] [--plots DIR] [--quiet]
-//                    [--time-limit SECONDS]
+//                    [--time-limit SECONDS] [--optimization-rounds N]
 //
 // Progress goes to standard error; OUT is written completely or not at all. Exit codes: 0
 // success, 1 the input cannot be remeshed (defects, unsupported topology, failed flattening),
@@ -25,6 +25,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <fstream>
 #include <iostream>
 #include <limits>
@@ -43,7 +44,7 @@ const char* usage =
   "usage: remesh_conformal IN OUT [--target-edge-length L | --relative-edge-length R] [--min-angle DEG]\n"
   "                        [--features-angle DEG] [--patches FILE] [--cut-plane a,b,c,d]...\n"
   "                        [--save-patches DIR] [--sequential] [--report FILE.json] [--plots DIR] [--quiet]\n"
-  "                        [--time-limit SECONDS]\n"
+  "                        [--time-limit SECONDS] [--optimization-rounds N]\n"
   "  IN, OUT                 mesh files (.off .obj .ply .stl); OUT is written atomically\n"
   "  --target-edge-length L  target edge length in the input's units\n"
   "  --relative-edge-length R  target edge length as a fraction of the bounding-box diagonal (default 0.01)\n"
@@ -57,6 +58,7 @@ const char* usage =
   "  --plots DIR             DIR/quality.svg: angle and skewness histograms, input and output\n"
   "  --quiet                 no progress messages\n"
   "  --time-limit SECONDS    give up (exit code 3, no output written) if reading and remeshing take longer\n"
+  "  --optimization-rounds N rounds of flips and smoothing judged on the surface after the refinement (default 5, 0: none)\n"
   "Any orientable, edge-manifold triangle mesh: closed or open, any genus, several components.\n"
   "exit code: 0 success, 1 the input cannot be remeshed, 2 the tool could not run, 3 time limit exceeded\n";
 
@@ -65,6 +67,7 @@ struct Options
   std::string input, output, report, plots, patches, save_patches;
   double target = 0., relative = 0.01, min_angle = 28., features_angle = 60.;
   double time_limit = std::numeric_limits<double>::infinity();
+  double optimization_rounds = 5.;
   std::vector<K::Plane_3> planes;
   bool quiet = false, sequential = false;
 };
@@ -129,6 +132,9 @@ bool parse(int argc, char** argv, Options& o)
       o.quiet = true;
     else if(arg == "--time-limit")
       ok = number(o.time_limit) && o.time_limit > 0.;
+    else if(arg == "--optimization-rounds")
+      ok = number(o.optimization_rounds) && o.optimization_rounds >= 0. && o.optimization_rounds <= 100.
+           && o.optimization_rounds == std::floor(o.optimization_rounds);
     else if(!arg.empty() && arg[0] != '-' && o.input.empty())
       o.input = arg;
     else if(!arg.empty() && arg[0] != '-' && o.output.empty())
@@ -220,11 +226,11 @@ int main(int argc, char** argv)
   const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin())
                                     + CGAL::square(box.zmax() - box.zmin()));
   const double target = o.target > 0. ? o.target : o.relative * diagonal;
-  const auto np = CR::parameters::target_edge_length(
+  const auto np = CR::parameters::optimization_rounds(int(o.optimization_rounds), CR::parameters::target_edge_length(
     target, CR::parameters::minimum_angle(
               o.min_angle, CR::parameters::features_angle(
                              o.features_angle, CR::parameters::cut_planes(
-                                                 o.planes, CR::parameters::progress(progress, CGAL::parameters::face_patch_map(patch_of))))));
+                                                 o.planes, CR::parameters::progress(progress, CGAL::parameters::face_patch_map(patch_of)))))));
 
   if(!o.save_patches.empty())
   {

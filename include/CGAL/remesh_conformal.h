@@ -352,6 +352,8 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
                                            "(Delaunay refinement does not terminate far beyond 30)");
   if(!(maximum_scale_ratio > 1.))
     throw Error(Error_code::INVALID_INPUT, "remesh_conformal: the maximum scale ratio must be above 1");
+  if(optimization_rounds < 0)
+    throw Error(Error_code::INVALID_INPUT, "remesh_conformal: the number of optimization rounds must not be negative");
   report.target_edge_length = h;
   auto fim = CGAL::get_initialized_face_index_map(input, np);
   auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(vertex_point, input));

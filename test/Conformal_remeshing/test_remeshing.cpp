@@ -250,6 +250,8 @@ TEST(RemeshConformal, BadParametersAreRefused)
   EXPECT_THROW(CR::remesh_conformal(patch, CR::parameters::minimum_angle(40.)), CR::Error);
   EXPECT_THROW(CR::remesh_conformal(patch, CR::parameters::target_edge_length(-1.)), CR::Error);
   EXPECT_THROW(CR::remesh_conformal(patch, CR::parameters::maximum_scale_ratio(0.5)), CR::Error);
+  test_support::expect_error([&] { CR::remesh_conformal(patch, CR::parameters::optimization_rounds(-1)); },
+                             CR::Error_code::INVALID_INPUT, {"optimization rounds"});
 }
 
 // Issue #8: maximum_running_time stops remesh_conformal() and conformal_flatten() with
