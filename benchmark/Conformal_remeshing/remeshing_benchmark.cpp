@@ -118,14 +118,30 @@ int main(int argc, char** argv)
   std::cout << std::left << std::setw(22) << "model" << std::setw(12) << "method" << std::right << std::setw(8) << "sec"
             << std::setw(8) << "verts" << std::setw(8) << "minang" << std::setw(8) << "%<25" << std::setw(8) << "skew"
             << std::setw(8) << "%edges" << std::setw(10) << "H to" << std::setw(10) << "H from" << std::setw(6) << "self" << "\n";
+  std::size_t failures = 0;
   for(std::size_t k = 0; k < models.size(); ++k)
   {
     const Mesh& input = models[k].second;
     Mesh ours;
     CR::Remeshing_report report;
-    const double ours_seconds = bm::median_seconds([&] {
-      report = CR::remesh_conformal(input, ours, CR::parameters::relative_target_edge_length(relative));
-    });
+    double ours_seconds = 0.;
+    try
+    {
+      ours_seconds = bm::median_seconds([&] {
+        report = CR::remesh_conformal(input, ours, CR::parameters::relative_target_edge_length(relative));
+      });
+    }
+    catch(const CR::Error& e)
+    {
+      // A model the remesher refuses is a result too: recorded, and the run goes on.
+      ++failures;
+      std::cout << std::left << std::setw(22) << models[k].first << std::setw(12) << "conformal" << "FAILED: " << e.what() << "\n";
+      std::string message;
+      for(const char c : std::string(e.what()))
+        message += (c == '"' || c == '\\') ? std::string("\\") + c : std::string(1, c);
+      json << (k ? ",\n" : "") << "  {\"model\": \"" << models[k].first << "\", \"failed\": \"" << message << "\"}";
+      continue;
+    }
     const double h = report.target_edge_length;
     Mesh peer;
     const double peer_seconds = bm::median_seconds([&] {
@@ -144,6 +160,7 @@ int main(int argc, char** argv)
          << report.seconds_segmentation << ", \"flattening\": " << report.seconds_flattening
          << ", \"meshing_and_pull_back\": " << report.seconds_meshing_stage << ", \"gluing\": " << report.seconds_gluing
          << ", \"planar_meshing_thread_seconds\": " << report.seconds_planar_meshing
+         << ", \"optimization_thread_seconds\": " << report.seconds_optimization
          << ", \"pull_back_thread_seconds\": " << report.seconds_pull_back << "}, \"conformal\": ";
     write_json(json, a);
     json << ", \"isotropic\": ";
@@ -153,5 +170,5 @@ int main(int argc, char** argv)
   json << "\n]\n";
   std::cout << "(sec: median of 3 runs; %edges: edges within [0.7, 1.4] x target; H: Hausdorff distance to and from "
                "the input over its diagonal; ratio: conformal / isotropic)\n";
-  return 0;
+  return failures == 0 ? 0 : 1;
 }
