@@ -49,7 +49,10 @@ inline Curve_samples sample_boundary_curves(const Poly_annulus_segmentation& s, 
   const Mesh& m = s.mesh;
   const std::size_t border = std::size_t(-1);
   auto patch_of = [&](Halfedge h) { return m.is_border(h) ? border : s.patch[m.face(h)]; };
-  auto sides = [&](Halfedge h) { return std::minmax(patch_of(h), patch_of(m.opposite(h))); };
+  // By value: std::minmax of two temporaries returns references to them, dangling here.
+  auto sides = [&](Halfedge h) -> std::pair<std::size_t, std::size_t> {
+    return std::minmax(patch_of(h), patch_of(m.opposite(h)));
+  };
 
   std::vector<std::vector<Halfedge> > outgoing(m.number_of_vertices());
   for(auto e : m.edges())
