@@ -332,6 +332,59 @@ TEST(IntrinsicTriangulation, FlipKeepsCurvatureAndMakesDelaunay)
   EXPECT_NEAR(t.length(e), l[e], 1e-12 * l[e]);
 }
 
+TEST(IntrinsicTriangulation, SplitAtTheAltitudeFootMakesRightAngles)
+{
+  // Two planar triangles on the edge (0, 1) of length 4; the corner at vertex 2 is obtuse and
+  // its altitude meets the edge a quarter of the way from vertex 0.
+  Soup s;
+  s.points = {{{0., 0., 0.}}, {{4., 0., 0.}}, {{1., 0.3, 0.}}, {{2., -1., 0.}}};
+  s.faces = {{{0, 1, 2}}, {{1, 0, 3}}};
+  Tri t = from_soup(s);
+  int e = 0;
+  while(t.is_border_edge(e)) ++e;
+  const int h = t.halfedge(e);
+  const double from_source = t.source(h) == 0 ? 0.25 : 0.75;
+  const std::vector<double> k0 = t.vertex_curvatures();
+  const int m = t.split_edge(e, from_source);
+  ASSERT_EQ(m, 4);
+  ASSERT_TRUE(t.is_valid());
+  // The metric is kept: old curvatures unchanged, the new vertex flat, the two halves 1 and 3.
+  const std::vector<double> k = t.vertex_curvatures();
+  for(int v = 0; v < 4; ++v) EXPECT_NEAR(k[v], k0[v], 1e-12) << "vertex " << v;
+  EXPECT_NEAR(k[m], 0., 1e-12);
+  for(int f = 0; f < t.number_of_faces(); ++f)
+    for(int c = 0; c < 3; ++c)
+    {
+      const int a = t.vertex(f, c), b = t.vertex(f, (c + 1) % 3);
+      if((a == m && b == 0) || (a == 0 && b == m)) EXPECT_NEAR(t.length(t.edge(f, c)), 1., 1e-12);
+      if((a == m && b == 1) || (a == 1 && b == m)) EXPECT_NEAR(t.length(t.edge(f, c)), 3., 1e-12);
+      // both triangles with vertex 2 are right-angled at the new vertex
+      if(a == m && (t.vertex(f, (c + 1) % 3) == 2 || t.vertex(f, (c + 2) % 3) == 2))
+        EXPECT_NEAR(t.corner_angle(f, c), pi / 2, 1e-12);
+    }
+  // The new vertex maps to the input edge, a quarter of the way from vertex 0.
+  for(int f = 0; f < t.number_of_faces(); ++f)
+    for(int c = 0; c < 3; ++c)
+      if(t.vertex(f, c) == m)
+      {
+        Tri::Face_location at{f, {{0., 0., 0.}}};
+        at.coordinates[c] = 1.;
+        const Tri::Face_location in = t.to_input(at);
+        const std::array<int, 3>& corners = s.faces[in.face];
+        double x = 0., y = 0.;
+        for(int i = 0; i < 3; ++i)
+        {
+          x += in.coordinates[i] * s.points[corners[i]][0];
+          y += in.coordinates[i] * s.points[corners[i]][1];
+        }
+        EXPECT_NEAR(x, 1., 1e-12);
+        EXPECT_NEAR(y, 0., 1e-12);
+      }
+  // Fractions that leave no edge are refused.
+  EXPECT_EQ(t.split_edge(e, 0.), -1);
+  EXPECT_EQ(t.split_edge(e, 1.), -1);
+}
+
 TEST(IntrinsicTriangulation, InvalidInputIsReported)
 {
   std::vector<std::array<int, 3>> f{{{0, 1, 2}}};

@@ -108,8 +108,8 @@ void read_face_graph(const TriangleMesh& tm, const NamedParameters& np,
 /// triangle to its scaled self by keeping barycentric coordinates: an affine map per triangle,
 /// which agrees on shared edges, hence a homeomorphism.
 ///
-/// **Splits.** `split_edge()` inserts the midpoint of an edge (in the current metric) and
-/// joins it to the opposite corners. The planar layout of the edge's triangle(s) is again
+/// **Splits.** `split_edge()` inserts a point of an edge (its midpoint by default, in the current
+/// metric) and joins it to the opposite corners. The planar layout of the edge's triangle(s) is again
 /// shared by the old and new faces, so splits enter the correspondence like flips. A split
 /// vertex gets the next vertex index; a new face gets the next face index.
 ///
@@ -402,13 +402,15 @@ public:
     return true;
   }
 
-  /// Splits edge `e` at its midpoint (in the current metric) and joins the new vertex to the
-  /// opposite corner(s): one new face on the boundary, two inside. The new vertex lies exactly on
+  /// Splits edge `e` at the point `fraction` of the way from `source(halfedge(e))` (in the
+  /// current metric; the midpoint by default) and joins the new vertex to the opposite
+  /// corner(s): one new face on the boundary, two inside. The new vertex lies exactly on
   /// the edge, so a split boundary or constrained edge stays a boundary or constrained chain (it
   /// maps into the input edge it came from, or across the input faces the edge crosses). The
   /// halves of an unflippable edge are unflippable. Returns the new vertex, or -1 if a face of
-  /// `e` has the same edge twice or violates the triangle inequality.
-  int split_edge(int e)
+  /// `e` has the same edge twice or violates the triangle inequality (also after the split, by
+  /// rounding), or if `fraction` leaves no length on one side.
+  int split_edge(int e, const FT& fraction = FT(1) / FT(2))
   {
     namespace rf = internal::ricci_flow;
     const int h = edge_he_[e], t = he_twin_[h];
@@ -426,7 +428,8 @@ public:
     r.points[0] = {{FT(0), FT(0)}};
     r.points[1] = {{length_[e], FT(0)}};
     r.points[2] = rf::third_point(r.points[0], r.points[1], length_[he_edge_[hp]], ta[ca]);
-    r.points[4] = {{length_[e] / FT(2), FT(0)}};
+    const FT before = length_[e] * fraction, after = length_[e] - before; // lengths of (i, m) and (m, j)
+    r.points[4] = {{before, FT(0)}};
     r.old_face[0] = fa;
     r.old_label[0][ca] = 0; r.old_label[0][(ca + 1) % 3] = 1; r.old_label[0][(ca + 2) % 3] = 2;
     auto dist = [](const Point_2& a, const Point_2& b) {
@@ -437,22 +440,22 @@ public:
     // Rounding must not leave a new triangle that violates the triangle inequality.
     {
       std::array<FT, 3> t_new;
-      const FT l_mk = dist(r.points[4], r.points[2]), half_e = length_[e] / FT(2);
-      if(!rf::half_angle_tangents(std::array<FT, 3>{{half_e, l_mk, length_[he_edge_[hp]]}}, t_new) ||
-         !rf::half_angle_tangents(std::array<FT, 3>{{half_e, l_mk, length_[he_edge_[hn]]}}, t_new))
+      const FT l_mk = dist(r.points[4], r.points[2]);
+      if(!(FT(0) < before && FT(0) < after) ||
+         !rf::half_angle_tangents(std::array<FT, 3>{{before, l_mk, length_[he_edge_[hp]]}}, t_new) ||
+         !rf::half_angle_tangents(std::array<FT, 3>{{after, l_mk, length_[he_edge_[hn]]}}, t_new))
         return -1;
       if(fb >= 0)
       {
         const Point_2 pl = rf::third_point(r.points[1], r.points[0], length_[he_edge_[prev(t)]], tb[cb]);
         const FT l_ml = dist(r.points[4], pl);
-        if(!rf::half_angle_tangents(std::array<FT, 3>{{half_e, l_ml, length_[he_edge_[next(t)]]}}, t_new) ||
-           !rf::half_angle_tangents(std::array<FT, 3>{{half_e, l_ml, length_[he_edge_[prev(t)]]}}, t_new))
+        if(!rf::half_angle_tangents(std::array<FT, 3>{{before, l_ml, length_[he_edge_[next(t)]]}}, t_new) ||
+           !rf::half_angle_tangents(std::array<FT, 3>{{after, l_ml, length_[he_edge_[prev(t)]]}}, t_new))
           return -1;
       }
     }
     const int vm = nv_++;
     vertex_on_border_.push_back(fb < 0 ? 1 : 0);
-    const FT half = length_[e] / FT(2);
     const char constrained = unflippable_[e];
     auto new_edge = [this](const FT& l, char flag) {
       edge_he_.push_back(-1);
@@ -478,9 +481,9 @@ public:
         he_twin_[s.twin] = slot;
     };
     const Slot s_jk{vj, he_twin_[hn], he_edge_[hn]}, s_ki{vk, he_twin_[hp], he_edge_[hp]};
-    const int e_mj = new_edge(half, constrained), e_mk = new_edge(dist(r.points[4], r.points[2]), 0);
+    const int e_mj = new_edge(after, constrained), e_mk = new_edge(dist(r.points[4], r.points[2]), 0);
     const int fa2 = new_face();
-    length_[e] = half;
+    length_[e] = before;
     // fa = (i, m, k), fa2 = (m, j, k)
     put(3 * fa + 0, Slot{vi, -1, e});
     put(3 * fa + 1, Slot{vm, -1, e_mk});

@@ -36,7 +36,7 @@
 // - `use_edge_flips(b)`: keep the triangulation Delaunay by edge flips (default `true`); `false`
 //   gives the plain Newton method of a fixed triangulation, for comparisons;
 // - `edge_split_angle(a)`: a boundary or unflippable edge with an opposite angle above `a` is
-//   split at its midpoint (default 0.9 pi; pi or more disables splitting);
+//   split at the foot of that angle's altitude (default 0.9 pi; pi or more disables splitting);
 // - `exact_conformal_path(b)`: flip every edge at the moment it stops being Delaunay along each
 //   Newton step (default `false`), for the path-independent discrete conformal metric.
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(curvature_tolerance)
@@ -156,7 +156,9 @@ double ricci_energy(const Intrinsic_triangulation<FT>& tri, const std::vector<FT
 ///
 /// Boundary and unflippable edges cannot be flipped; when an angle opposite such an edge
 /// exceeds the split angle (the triangle is close to degenerate and no flip can help), the edge
-/// is split at its midpoint instead (DESIGN.md 2.5). A new vertex has target
+/// is split instead (DESIGN.md 2.5), at the foot of the altitude from the obtuse corner: both new
+/// triangles are right-angled there, so one split cures the corner (a midpoint split does not
+/// when the corner is off the middle, and slivers of CAD fans then took many rounds). A new vertex has target
 /// curvature 0 (it lies on a straight piece of the target boundary, or in the flat interior);
 /// `Ricci_flow_result::target_curvatures` lists the targets of all vertices, old and new.
 ///
@@ -273,14 +275,23 @@ Ricci_flow_result<FT> discrete_ricci_flow(Intrinsic_triangulation<FT>& tri,
 
   // Flip to Delaunay; split boundary / unflippable edges whose opposite angles are too large.
   const std::size_t max_splits = 4 * static_cast<std::size_t>(tri.number_of_vertices()) + 1000;
+  // Where the altitude from the corner opposite halfedge `h` meets it, as a fraction from its source.
+  auto altitude_foot = [&tri](int h) {
+    const FT l = tri.length(tri.edge(h)), to_source = tri.length(tri.edge(tri.prev(h))),
+             to_target = tri.length(tri.edge(tri.next(h)));
+    return (l * l + to_source * to_source - to_target * to_target) / (FT(2) * l * l);
+  };
   auto restore_delaunay = [&]() {
     const Clock::time_point t0 = Clock::now();
     result.number_of_flips += tri.make_delaunay();
     // Each round of splits is followed by flips; the time limit is also checked between rounds
-    // (the caller's Newton loop then stops with TIME_LIMIT_EXCEEDED).
-    while(split_angle < pi && result.number_of_splits < max_splits && !time_limit.exceeded())
+    // (the caller's Newton loop then stops with TIME_LIMIT_EXCEEDED). A split at the altitude's
+    // foot cures its corner, so a few rounds suffice; more mean splits feeding each other across
+    // a constraint in a collapsing metric (seen on the paper's shield: thousands of rounds of 15
+    // splits, lengths shrinking to 1e-26), which the Newton loop then reports as not converging.
+    for(int round = 0; round < 16 && split_angle < pi && result.number_of_splits < max_splits && !time_limit.exceeded(); ++round)
     {
-      std::vector<int> todo;
+      std::vector<std::pair<int, FT> > todo; // edge, where to split it (fraction from its halfedge's source)
       for(int e = 0; e < tri.number_of_edges(); ++e)
       {
         if(!tri.is_border_edge(e) && !tri.is_unflippable(e))
@@ -290,15 +301,20 @@ Ricci_flow_result<FT> discrete_ricci_flow(Intrinsic_triangulation<FT>& tri,
         // The margin catches the edges at which the line search stopped (just below the angle).
         const int h = tri.halfedge(e), t = tri.opposite(h);
         const FT threshold = split_angle * FT(0.999);
-        if(tri.corner_angle(tri.face(h), (h % 3 + 2) % 3) > threshold ||
-           (t >= 0 && tri.corner_angle(tri.face(t), (t % 3 + 2) % 3) > threshold))
-          todo.push_back(e);
+        const FT angle_h = tri.corner_angle(tri.face(h), (h % 3 + 2) % 3);
+        const FT angle_t = t >= 0 ? tri.corner_angle(tri.face(t), (t % 3 + 2) % 3) : FT(0);
+        if(angle_h > threshold || angle_t > threshold)
+        {
+          // The altitude's foot from the larger corner, kept off the ends (no tiny edges).
+          const FT foot = angle_h >= angle_t ? altitude_foot(h) : FT(1) - altitude_foot(t);
+          todo.emplace_back(e, (std::min)(FT(49) / FT(50), (std::max)(FT(1) / FT(50), foot)));
+        }
       }
       if(todo.empty())
         break;
       const std::size_t splits_before = result.number_of_splits;
-      for(int e : todo)
-        if(tri.split_edge(e) >= 0)
+      for(const auto& split : todo)
+        if(tri.split_edge(split.first, split.second) >= 0)
         {
           ++result.number_of_splits;
           target.push_back(FT(0));
