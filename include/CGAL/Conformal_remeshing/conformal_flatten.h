@@ -194,9 +194,17 @@ private:
 namespace internal {
 
 // Orders the boundary halfedges of a set of faces into loops, with the faces on the left.
+// The patch region of a flattening is a manifold with boundary. When a folded layout makes it
+// pinched at a vertex (two boundary halfedges leaving it) or its boundary does not close into
+// simple loops, the layout cannot be an embedding: that is reported, not walked.
 inline std::vector<std::vector<int> > region_boundary_loops(const Intrinsic_triangulation<double>& tri,
                                                             const std::vector<char>& in_region)
 {
+  auto not_simple = [](const char* what, int v) {
+    return Error(Error_code::NOT_AN_EMBEDDING, std::string("conformal_flatten: the patch region of the flattened "
+                                                           "triangulation ") + what + " at vertex " + std::to_string(v)
+                                                 + " (a folded layout)");
+  };
   std::map<int, int> next_vertex; // along each loop, faces on the left
   for(int f = 0; f < tri.number_of_faces(); ++f)
   {
@@ -206,8 +214,9 @@ inline std::vector<std::vector<int> > region_boundary_loops(const Intrinsic_tria
     {
       const int h = Intrinsic_triangulation<double>::halfedge(f, c);
       const int twin = tri.opposite(h);
-      if(twin < 0 || !in_region[Intrinsic_triangulation<double>::face(twin)])
-        next_vertex[tri.source(h)] = tri.target(h);
+      if((twin < 0 || !in_region[Intrinsic_triangulation<double>::face(twin)])
+         && !next_vertex.emplace(tri.source(h), tri.target(h)).second)
+        throw not_simple("is pinched", tri.source(h));
     }
   }
   std::vector<std::vector<int> > loops;
@@ -217,11 +226,18 @@ inline std::vector<std::vector<int> > region_boundary_loops(const Intrinsic_tria
     if(used[start.first])
       continue;
     loops.emplace_back();
-    for(int v = start.first; !used[v]; v = next_vertex.at(v))
+    int v = start.first;
+    do
     {
+      if(used[v])
+        throw not_simple("has a boundary that runs into itself", v);
       used[v] = true;
       loops.back().push_back(v);
-    }
+      const auto next = next_vertex.find(v);
+      if(next == next_vertex.end())
+        throw not_simple("has a boundary that stops", v);
+      v = next->second;
+    } while(v != start.first);
   }
   return loops;
 }
