@@ -91,6 +91,22 @@ TEST(PlanarEmbedding, TouchingTrianglesDoNotOverlap)
   EXPECT_GT(r.boundary_intersections, 0u);
 }
 
+TEST(PlanarEmbedding, OverlapsAreAreasInCommon)
+{
+  // A triangle inside another overlaps it although no edges cross; triangles on both sides of a
+  // shared edge do not, even a sliver 1e-12 thick (as in a fuzzed folded grid), which does
+  // overlap a triangle on its own side.
+  const std::vector<Point_2> uv = {Point_2(0, 0), Point_2(4, 0), Point_2(0, 4), Point_2(1, 1), Point_2(2, 1), Point_2(1, 2),
+                                   Point_2(4, 4), Point_2(2 + 1e-12, 2 + 1e-12)};
+  auto overlaps = [&uv](const Faces& faces) {
+    return CR::check_planar_embedding(uv, faces, Loops{}, true).overlapping_face_pairs;
+  };
+  EXPECT_EQ(overlaps({{{0, 1, 2}}, {{3, 4, 5}}}), 1u);
+  EXPECT_EQ(overlaps({{{0, 1, 2}}, {{1, 6, 2}}}), 0u);
+  EXPECT_EQ(overlaps({{{0, 1, 2}}, {{1, 7, 2}}}), 0u);
+  EXPECT_EQ(overlaps({{{1, 6, 2}}, {{1, 7, 2}}}), 1u);
+}
+
 TEST(PlanarEmbedding, HolesMustLieInsideTheOuterBoundary)
 {
   // An outer square 0..3 with a hole 4-5-6 inside or outside it; triangles are irrelevant here.
