@@ -19,6 +19,7 @@
 
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/tags.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -316,7 +317,9 @@ void for_each_patch(std::size_t n, const Task& task)
 /// \throws Error with `Error_code::INVALID_INPUT` when the input is not a valid, manifold,
 ///         orientable triangle mesh or a parameter is out of range, and with the flattening's
 ///         code when a patch cannot be flattened even after bisection (the message says why);
-///         with `Error_code::TIME_LIMIT_EXCEEDED` past the `maximum_running_time`.
+///         with `Error_code::TIME_LIMIT_EXCEEDED` past the `maximum_running_time`; with
+///         `Error_code::NOT_AN_EMBEDDING` when the remeshed surface would intersect itself where
+///         the input does not (checked with exact predicates; `output` is then left untouched).
 template <typename ConcurrencyTag = CGAL::Parallel_if_available_tag, typename TriangleMesh,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& output,
@@ -526,8 +529,18 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
   output_points.reserve(used_points.size());
   for(std::size_t i : used_points)
     output_points.push_back(Output_point(points[i].x(), points[i].y(), points[i].z()));
+  TriangleMesh glued;
+  Polygon_mesh_processing::polygon_soup_to_polygon_mesh(output_points, triangles, glued);
+  // No self-intersection may be created (exact predicates): such a remeshing is refused, not
+  // returned. Seen where false sharp features cut a bent sliver sheet into many small patches.
+  if(Polygon_mesh_processing::does_self_intersect<ConcurrencyTag>(glued)
+     && !Polygon_mesh_processing::does_self_intersect<ConcurrencyTag>(input, CGAL::parameters::vertex_point_map(vpm)))
+    throw Error(Error_code::NOT_AN_EMBEDDING,
+                "remesh_conformal: the remeshed patches intersect each other where the input does not intersect itself "
+                "(a known weakness where false sharp features cut a bent surface into many patches; "
+                "features_angle(0) may help)");
   clear(output);
-  Polygon_mesh_processing::polygon_soup_to_polygon_mesh(output_points, triangles, output);
+  output = std::move(glued);
   if(locations != nullptr)
   {
     // The soup's points become the mesh's vertices in order.
