@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <iostream>
 #include <map>
 #include <set>
 #include <cmath>
@@ -240,6 +241,37 @@ TEST(SurfaceOptimization, LeavesANonManifoldInputAsIs)
   EXPECT_FALSE(RM::optimize_on_surface(points, positions, triangles, 0, wavy_lift, 28., 1., 3).optimized);
   EXPECT_EQ(points, points_before);
   EXPECT_EQ(triangles, triangles_before);
+}
+
+TEST(RemeshConformal, AMillionFacesWithOneBadFaceAreRefusedAtOnce)
+{
+  // Issue #8's hostile input: a flat grid of 708 x 707 unit squares (1,001,112 faces) in which
+  // one vertex sits exactly on the diagonal of its square, making one face of zero area and no
+  // other. The remesher names that face and stops before any work (time printed, not asserted).
+  const int nx = 708, ny = 707;
+  Mesh grid;
+  std::vector<Mesh::Vertex_index> v;
+  v.reserve(std::size_t(nx + 1) * std::size_t(ny + 1));
+  for(int j = 0; j <= ny; ++j)
+    for(int i = 0; i <= nx; ++i)
+      v.push_back(grid.add_vertex(K::Point_3(i, j, 0)));
+  auto at = [&](int i, int j) { return v[std::size_t(j) * std::size_t(nx + 1) + std::size_t(i)]; };
+  for(int j = 0; j < ny; ++j)
+    for(int i = 0; i < nx; ++i)
+    {
+      grid.add_face(at(i, j), at(i + 1, j), at(i + 1, j + 1));
+      grid.add_face(at(i, j), at(i + 1, j + 1), at(i, j + 1));
+    }
+  ASSERT_EQ(grid.number_of_faces(), 1001112u);
+  const int bi = nx / 2, bj = ny / 2;
+  grid.point(at(bi + 1, bj)) = K::Point_3(bi + 0.5, bj + 0.5, 0); // onto the diagonal (bi, bj)-(bi+1, bj+1)
+  Mesh output;
+  const auto start = std::chrono::steady_clock::now();
+  test_support::expect_error([&] { CR::remesh_conformal(grid, output); }, CR::Error_code::INVALID_INPUT,
+                             {"1 degenerate (zero-area) face", "has collinear vertices"});
+  std::cout << "  refused in " << std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count()
+            << " s" << std::endl;
+  EXPECT_EQ(output.number_of_faces(), 0u);
 }
 
 TEST(RemeshConformal, BadParametersAreRefused)
