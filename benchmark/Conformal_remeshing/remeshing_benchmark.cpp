@@ -15,6 +15,7 @@
 #include "test_surfaces.h"
 #include "generated_patches.h"
 #include "isotropic_peer.h"
+#include "json_writer.h"
 #include "timing.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -136,10 +137,11 @@ int main(int argc, char** argv)
       // A model the remesher refuses is a result too: recorded, and the run goes on.
       ++failures;
       std::cout << std::left << std::setw(22) << models[k].first << std::setw(12) << "conformal" << "FAILED: " << e.what() << "\n";
-      std::string message;
-      for(const char c : std::string(e.what()))
-        message += (c == '"' || c == '\\') ? std::string("\\") + c : std::string(1, c);
-      json << (k ? ",\n" : "") << "  {\"model\": \"" << models[k].first << "\", \"failed\": \"" << message << "\"}";
+      Conformal_remeshing_tools::Json_writer record; // escapes the message
+      record.begin_object().field("model", models[k].first).field("failed", std::string(e.what())).end_object();
+      std::string text = record.str();
+      text.pop_back(); // its final newline
+      json << (k ? ",\n" : "") << "  " << text;
       continue;
     }
     const double h = report.target_edge_length;

@@ -539,7 +539,6 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
                 "remesh_conformal: the remeshed patches intersect each other where the input does not intersect itself "
                 "(a known weakness where false sharp features cut a bent surface into many patches; "
                 "features_angle(0) may help)");
-  clear(output);
   output = std::move(glued);
   if(locations != nullptr)
   {
