@@ -27,6 +27,8 @@
 #include <chrono>
 #include <cmath>
 #include <functional>
+#include <iterator>
+#include <sstream>
 #include <string>
 #include <type_traits>
 #include <vector>
@@ -532,13 +534,33 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
   TriangleMesh glued;
   Polygon_mesh_processing::polygon_soup_to_polygon_mesh(output_points, triangles, glued);
   // No self-intersection may be created (exact predicates): such a remeshing is refused, not
-  // returned. Seen where false sharp features cut a bent sliver sheet into many small patches.
+  // returned, and one place where it happens is named. Seen where sheets nearly touch (closer
+  // than the output's chords deviate from the surface) and where false sharp features cut a bent
+  // sliver sheet into many small patches.
   if(Polygon_mesh_processing::does_self_intersect<ConcurrencyTag>(glued)
      && !Polygon_mesh_processing::does_self_intersect<ConcurrencyTag>(input, CGAL::parameters::vertex_point_map(vpm)))
+  {
+    typedef typename boost::graph_traits<TriangleMesh>::face_descriptor Glued_face;
+    std::vector<std::pair<Glued_face, Glued_face> > intersecting;
+    Polygon_mesh_processing::self_intersections(glued, std::back_inserter(intersecting));
+    std::ostringstream where;
+    if(!intersecting.empty())
+    {
+      const auto h = halfedge(intersecting.front().first, glued);
+      const auto vp = get(CGAL::vertex_point, glued);
+      const auto& a = get(vp, source(h, glued));
+      const auto& b = get(vp, target(h, glued));
+      const auto& c = get(vp, target(next(h, glued), glued));
+      where << " near (" << (CGAL::to_double(a.x()) + CGAL::to_double(b.x()) + CGAL::to_double(c.x())) / 3. << ", "
+            << (CGAL::to_double(a.y()) + CGAL::to_double(b.y()) + CGAL::to_double(c.y())) / 3. << ", "
+            << (CGAL::to_double(a.z()) + CGAL::to_double(b.z()) + CGAL::to_double(c.z())) / 3. << ")";
+    }
     throw Error(Error_code::NOT_AN_EMBEDDING,
-                "remesh_conformal: the remeshed patches intersect each other where the input does not intersect itself "
-                "(a known weakness where false sharp features cut a bent surface into many patches; "
-                "features_angle(0) may help)");
+                "remesh_conformal: the remeshed patches intersect each other" + where.str()
+                + ", where the input does not intersect itself: two parts of the surface come closer there than the "
+                  "output's chords deviate from it (nearly touching sheets; a smaller target edge length may help), "
+                  "or false sharp features cut a bent surface into many patches (features_angle(0) may help)");
+  }
   output = std::move(glued);
   if(locations != nullptr)
   {

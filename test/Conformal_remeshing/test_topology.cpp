@@ -133,8 +133,72 @@ TEST(RemeshAnyTopology, NoSelfIntersectionIsCreated)
   catch(const CR::Error& e)
   {
     EXPECT_EQ(e.code(), CR::Error_code::NOT_AN_EMBEDDING) << e.what();
-    EXPECT_NE(std::string(e.what()).find("intersect each other where the input does not"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("where the input does not intersect itself"), std::string::npos) << e.what();
     EXPECT_EQ(output.number_of_faces(), untouched);
+  }
+}
+
+// Issue #8's hostile inputs that need the whole pipeline: each has a defined outcome.
+TEST(HostileInputs, TinyHoleNextToAHugeOne)
+{
+  // A flat sheet (120 x 80) with a hole of radius 30 and one of radius 1e-4: 1e-6 of the
+  // diagonal, far below the target edge length. Outcome: a verified remeshing that keeps the
+  // tiny hole as a boundary loop on its input polygon.
+  Mesh sheet, output;
+  bm::Perforated_plate_parameters p = plate_with_holes(0);
+  bm::Circular_hole huge, tiny;
+  huge.x = -10.;
+  huge.radius = 30.;
+  tiny.x = 35.;
+  tiny.radius = 1e-4;
+  p.holes = {huge, tiny};
+  bm::make_perforated_sheet(sheet, p);
+  ASSERT_EQ(CR::check_mesh(sheet).total_boundary_loops(), 3u);
+  check_remeshing(sheet, 20., CGAL::parameters::default_values(), &output);
+  std::size_t on_tiny_hole = 0;
+  for(auto h : output.halfedges())
+    if(output.is_border(h))
+    {
+      const K::Point_3& x = output.point(output.target(h));
+      on_tiny_hole += std::hypot(x.x() - tiny.x, x.y() - tiny.y) <= tiny.radius * (1. + 1e-9);
+    }
+  EXPECT_GE(on_tiny_hole, 3u);
+}
+
+TEST(HostileInputs, NearlyTouchingSheets)
+{
+  // Two copies of a perforated sheet, 1e-6 apart (1e-8 of the diagonal). Flat, each copy's
+  // output lies in its own plane: a verified remeshing. Bent, the output's chords of one copy
+  // cross the other copy, which no remesher with straight edges can avoid at this length:
+  // refused with NOT_AN_EMBEDDING naming the place, the output left untouched.
+  for(const double bend : {0., 0.3})
+  {
+    Mesh sheets, copy;
+    bm::make_perforated_sheet(copy, plate_with_holes(3), bend);
+    CGAL::copy_face_graph(copy, sheets);
+    for(auto v : copy.vertices())
+      copy.point(v) = copy.point(v) + K::Vector_3(0., 0., 1e-6);
+    CGAL::copy_face_graph(copy, sheets);
+    ASSERT_FALSE(CGAL::Polygon_mesh_processing::does_self_intersect(sheets));
+    if(bend == 0.)
+    {
+      check_remeshing(sheets, 20.);
+      continue;
+    }
+    Mesh output;
+    make_sphere(output, 0);
+    try
+    {
+      CR::remesh_conformal(sheets, output);
+      ADD_FAILURE() << "the bent sheets were remeshed without an intersection";
+    }
+    catch(const CR::Error& e)
+    {
+      EXPECT_EQ(e.code(), CR::Error_code::NOT_AN_EMBEDDING) << e.what();
+      EXPECT_NE(std::string(e.what()).find("intersect each other near ("), std::string::npos) << e.what();
+      EXPECT_NE(std::string(e.what()).find("nearly touching sheets"), std::string::npos) << e.what();
+      EXPECT_EQ(output.number_of_faces(), 20u);
+    }
   }
 }
 
