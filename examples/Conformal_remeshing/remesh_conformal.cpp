@@ -304,7 +304,7 @@ int main(int argc, char** argv)
       json.key("segmentation").begin_object().field("patches", report.number_of_patches)
           .field("plane_cuts", report.plane_cuts).field("patch_bisections", report.patch_bisections)
           .field("feature_edges", report.feature_edges).field("dangling_feature_edges", report.dangling_feature_edges)
-          .field("boundary_curves", report.boundary_curves).end_object();
+          .field("boundary_curves", report.boundary_curves).field("refined_boundary_curves", report.refined_boundary_curves).end_object();
       json.key("flattening").begin_object().field("max_iterations", report.max_newton_iterations)
           .field("max_curvature_error", report.max_curvature_error).field("flips", report.flips)
           .field("max_scale_ratio", report.max_scale_ratio).end_object();

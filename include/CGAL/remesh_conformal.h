@@ -24,10 +24,13 @@
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <functional>
 #include <iterator>
+#include <map>
+#include <set>
 #include <sstream>
 #include <string>
 #include <type_traits>
@@ -73,6 +76,7 @@ struct Remeshing_report
   double max_scale_ratio = 0.; ///< the largest ratio of the local scales in a patch
   std::size_t boundary_curves = 0;
   std::size_t boundary_samples = 0;
+  std::size_t refined_boundary_curves = 0; ///< times a boundary curve of a thin patch was sampled twice as densely
   std::size_t output_vertices = 0;
   std::size_t output_faces = 0;
   /// output vertices whose planar position fell outside the flat patch (between a boundary
@@ -138,10 +142,54 @@ struct Remeshed_patch
   std::vector<Epick::Point_3> interior_points;
   std::vector<Poly_annulus_segmentation::Face> interior_faces; // the segmented face of each
   std::vector<std::array<std::size_t, 3> > triangles;
+  /// boundary chords (pairs of sample indices) the triangles would not glue at (see `chords_not_glued()`):
+  /// the triangles are not valid then
+  std::vector<std::pair<std::size_t, std::size_t> > chords_not_glued;
   std::size_t clamped_vertices = 0;
   std::size_t flips = 0; // by the optimization
   double seconds_planar_meshing = 0., seconds_optimization = 0., seconds_pull_back = 0.;
 };
+
+// The glue's preconditions: every chord between consecutive samples of a loop is an edge of one
+// planar triangle, traversed in the loop's direction, so that the neighbour, which traverses it
+// the other way, closes the surface there; and no other edge joins the two samples of a chord
+// (a diagonal between two samples that the patch touches elsewhere would make a third triangle
+// on that chord). Where a patch is thinner than the sample spacing, a chord of one side can cross
+// the other side in the plane. The offending chords are returned, as pairs of sample indices in
+// `samples`, for their curves to be sampled more densely.
+inline std::vector<std::pair<std::size_t, std::size_t> > chords_not_glued(const std::vector<std::vector<Boundary_sample> >& loops,
+                                                                        const Planar_mesh& planar,
+                                                                        const std::vector<std::size_t>& boundary_ids,
+                                                                        const Curve_samples& samples)
+{
+  std::set<std::pair<std::size_t, std::size_t> > loop_chords;
+  std::size_t first = 0;
+  for(const auto& loop : loops)
+  {
+    for(std::size_t i = 0; i < loop.size(); ++i)
+      loop_chords.emplace(first + i, first + (i + 1) % loop.size());
+    first += loop.size();
+  }
+  std::set<std::pair<std::size_t, std::size_t> > followed, result;
+  for(const auto& t : planar.triangles)
+    for(int c = 0; c < 3; ++c)
+    {
+      const std::pair<std::size_t, std::size_t> edge(t[c], t[(c + 1) % 3]);
+      if(loop_chords.count(edge))
+        followed.insert(edge);
+      else if(edge.first < planar.number_of_samples && edge.second < planar.number_of_samples
+              && !loop_chords.count({edge.second, edge.first}))
+      {
+        const auto pair = std::minmax(boundary_ids[edge.first], boundary_ids[edge.second]);
+        if(samples.curve_of_chord.count(pair))
+          result.insert(pair);
+      }
+    }
+  for(const auto& chord : loop_chords)
+    if(!followed.count(chord))
+      result.insert(std::minmax(boundary_ids[chord.first], boundary_ids[chord.second]));
+  return std::vector<std::pair<std::size_t, std::size_t> >(result.begin(), result.end());
+}
 
 // Planar Delaunay refinement of a flattened patch with the shared boundary samples, then the
 // pull-back of the new points onto the surface through the flow's correspondence.
@@ -170,6 +218,9 @@ inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, c
   if(planar.number_of_samples != result.boundary_ids.size())
     throw Error(Error_code::NOT_AN_EMBEDDING, "remesh_conformal: the boundary samples of a patch overlap in the plane");
   result.seconds_planar_meshing = std::chrono::duration<double>(Clock::now() - start).count();
+  result.chords_not_glued = chords_not_glued(loops, planar, result.boundary_ids, samples);
+  if(!result.chords_not_glued.empty())
+    return result;
 
   // Flips and moves judged on the surface (see surface_optimization.h). The surface positions are
   // the optimizer's working state only: the pull-back below locates the final points again, for
@@ -225,6 +276,51 @@ inline std::array<double, 3> barycentric(const Epick::Point_3& p, const std::arr
     return {{1., 0., 0.}};
   const double b1 = (vv * wu - uv * wv) / d, b2 = (uu * wv - uv * wu) / d;
   return {{1. - b1 - b2, b1, b2}};
+}
+
+// Why glued triangles are not a manifold surface: an edge used twice in the same direction, or a
+// vertex where separate fans of triangles meet, with the place and the patches involved.
+inline std::string describe_glue_defect(const std::vector<std::array<std::size_t, 3> >& triangles,
+                                        const std::vector<std::size_t>& patch_of_triangle, const std::vector<Epick::Point_3>& points)
+{
+  auto at = [&](std::size_t v) {
+    std::ostringstream out;
+    out << "(" << points[v].x() << ", " << points[v].y() << ", " << points[v].z() << ")";
+    return out.str();
+  };
+  std::map<std::pair<std::size_t, std::size_t>, std::size_t> user; // directed edge -> triangle
+  std::map<std::size_t, std::vector<std::pair<std::size_t, std::size_t> > > link; // vertex -> (next, previous) corners
+  for(std::size_t t = 0; t < triangles.size(); ++t)
+    for(int c = 0; c < 3; ++c)
+    {
+      const std::size_t a = triangles[t][c], b = triangles[t][(c + 1) % 3], z = triangles[t][(c + 2) % 3];
+      const auto used = user.emplace(std::make_pair(a, b), t);
+      if(!used.second)
+        return "the edge from " + at(a) + " to " + at(b) + " is used in the same direction by patches "
+               + std::to_string(patch_of_triangle[used.first->second]) + " and " + std::to_string(patch_of_triangle[t]);
+      link[a].emplace_back(b, z);
+    }
+  for(const auto& star : link)
+  {
+    // The triangles around a manifold vertex form one fan: walk it from one triangle, forwards,
+    // then backwards if it does not close (a border vertex). Edges are unique by now.
+    std::map<std::size_t, std::size_t> next_of, previous_of;
+    for(const auto& corner : star.second)
+    {
+      next_of[corner.first] = corner.second;
+      previous_of[corner.second] = corner.first;
+    }
+    const std::size_t start = star.second.front().first;
+    std::size_t walked = 1, v = star.second.front().second;
+    for(; v != start && next_of.count(v) && walked < star.second.size(); ++walked)
+      v = next_of[v];
+    if(v != start)
+      for(v = start; previous_of.count(v) && walked < star.second.size(); ++walked)
+        v = previous_of[v];
+    if(walked < star.second.size())
+      return "the vertex at " + at(star.first) + " joins separate fans of triangles";
+  }
+  return "no defect found (internal error)";
 }
 
 // Runs `task(i)` for i in [0, n), in parallel with TBB when asked for and available.
@@ -460,27 +556,59 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
   // --- shared boundary samples, then every patch meshed and pulled back -------------------------
   start = Clock::now();
   progress("meshing " + std::to_string(patches.size()) + " patches");
-  const internal::remeshing::Curve_samples samples = internal::remeshing::sample_boundary_curves(segmentation, h, corner);
+  // A patch thinner than the sample spacing can have a boundary chord that crosses its other side
+  // in the plane (see `chords_not_glued()`): the curves of such chords are sampled twice as
+  // densely and the patches meshed again, up to `max_halvings` times.
+  const int max_halvings = 6;
+  std::vector<int> halvings;
+  internal::remeshing::Curve_samples samples;
+  std::vector<internal::remeshing::Remeshed_patch> remeshed(patches.size());
+  for(int attempt = 0;; ++attempt)
+  {
+    samples = internal::remeshing::sample_boundary_curves(segmentation, h, corner, halvings);
+    halvings.resize(samples.number_of_curves, 0);
+    failures.assign(patches.size(), std::string());
+    internal::remeshing::for_each_patch<ConcurrencyTag>(patches.size(), [&](std::size_t p) {
+      try
+      {
+        time_limit.check("while meshing the patches");
+        remeshed[p] = internal::remeshing::remesh_flattened_patch(flattenings[p], patches[p], samples, h, min_angle, smoothing,
+                                                                  optimization_rounds);
+      }
+      catch(const Error& e)
+      {
+        failures[p] = e.what();
+      }
+    });
+    time_limit.check("while meshing the patches");
+    for(std::size_t p = 0; p < patches.size(); ++p)
+      if(!failures[p].empty())
+        throw Error(Error_code::NOT_AN_EMBEDDING, "remesh_conformal: patch " + std::to_string(p) + ": " + failures[p]);
+    std::set<std::size_t> curves_to_refine;
+    std::size_t first_failing = patches.size();
+    for(std::size_t p = 0; p < patches.size(); ++p)
+      for(const auto& chord : remeshed[p].chords_not_glued)
+      {
+        first_failing = (std::min)(first_failing, p);
+        curves_to_refine.insert(samples.curve_of_chord.at(chord));
+      }
+    if(curves_to_refine.empty())
+      break;
+    const bool refinable = std::all_of(curves_to_refine.begin(), curves_to_refine.end(),
+                                       [&](std::size_t c) { return halvings[c] < max_halvings; });
+    if(!refinable)
+      throw Error(Error_code::NOT_AN_EMBEDDING,
+                  "remesh_conformal: patch " + std::to_string(first_failing) + ": its planar mesh does not glue to its neighbours at "
+                    + std::to_string(remeshed[first_failing].chords_not_glued.size())
+                    + " boundary chords (not triangle edges in the loop's direction, or joined twice) even with boundary samples "
+                    + std::to_string(1 << max_halvings) + " times denser");
+    progress("sampling " + std::to_string(curves_to_refine.size()) + " boundary curves of thin patches more densely");
+    for(std::size_t c : curves_to_refine)
+      ++halvings[c];
+    report.refined_boundary_curves += curves_to_refine.size();
+  }
   report.boundary_samples = samples.points.size();
   report.boundary_curves = samples.number_of_curves;
-  std::vector<internal::remeshing::Remeshed_patch> remeshed(patches.size());
-  failures.assign(patches.size(), std::string());
-  internal::remeshing::for_each_patch<ConcurrencyTag>(patches.size(), [&](std::size_t p) {
-    try
-    {
-      time_limit.check("while meshing the patches");
-      remeshed[p] = internal::remeshing::remesh_flattened_patch(flattenings[p], patches[p], samples, h, min_angle, smoothing,
-                                                                      optimization_rounds);
-    }
-    catch(const Error& e)
-    {
-      failures[p] = e.what();
-    }
-  });
-  time_limit.check("while meshing the patches");
-  for(std::size_t p = 0; p < patches.size(); ++p)
-    if(!failures[p].empty())
-      throw Error(Error_code::NOT_AN_EMBEDDING, "remesh_conformal: patch " + std::to_string(p) + ": " + failures[p]);
   report.seconds_meshing_stage = seconds_since(start);
   for(const auto& r : remeshed)
   {
@@ -497,8 +625,10 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
   std::vector<Epick::Point_3> points(samples.points);
   std::vector<Face> point_face(samples.face);
   std::vector<std::array<std::size_t, 3> > triangles;
+  std::vector<std::size_t> patch_of_triangle;
   for(const auto& r : remeshed)
   {
+    patch_of_triangle.insert(patch_of_triangle.end(), r.triangles.size(), std::size_t(&r - remeshed.data()));
     const std::size_t offset = points.size() - samples.points.size();
     points.insert(points.end(), r.interior_points.begin(), r.interior_points.end());
     point_face.insert(point_face.end(), r.interior_faces.begin(), r.interior_faces.end());
@@ -511,7 +641,9 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
     }
   }
   if(!Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(triangles))
-    throw Error(Error_code::NOT_AN_EMBEDDING, "remesh_conformal: the remeshed patches do not glue into a manifold (internal error)");
+    throw Error(Error_code::NOT_AN_EMBEDDING, "remesh_conformal: the remeshed patches do not glue into a manifold: "
+                                                + internal::remeshing::describe_glue_defect(triangles, patch_of_triangle, points)
+                                                + " (internal error)");
   // Only the points some triangle uses become vertices: the curves are sampled before the patches
   // are meshed, and a sample no patch triangle ends up using must not stay an isolated vertex.
   typedef typename boost::property_traits<decltype(get(CGAL::vertex_point, output))>::value_type Output_point;

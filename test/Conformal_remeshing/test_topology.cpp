@@ -341,3 +341,90 @@ TEST(RemeshAnyTopology, SequentialAndParallelAgree)
   for(auto v : sequential.vertices())
     EXPECT_EQ(sequential.point(v), parallel.point(v));
 }
+
+// --- the pieces that keep thin patches gluable (issue #7's shield) ---------------------------
+
+TEST(ThinPatches, ABisectionMergesThinPiecesBack)
+{
+  // A flat square whose last column of faces is 0.002 wide: as its own piece of a cut it is a
+  // strip far narrower than 0.01, and joins the rest; a half of the square stays a piece.
+  Mesh square;
+  CGAL::make_grid(20, 20, square, [](int i, int j) { return K::Point_3((std::min)(i, 19) * 0.05 + (i == 20) * 0.002, j / 20., 0.); }, true);
+  CR::Poly_annulus_segmentation s;
+  CR::segment_into_poly_annuli(square, s);
+  ASSERT_EQ(s.number_of_patches, 1u);
+  auto centroid_x = [&](CR::Poly_annulus_segmentation::Face f) {
+    double x = 0.;
+    for(auto v : CGAL::vertices_around_face(s.mesh.halfedge(f), s.mesh))
+      x += s.mesh.point(v).x() / 3.;
+    return x;
+  };
+  for(auto f : s.mesh.faces())
+    s.patch[f] = centroid_x(f) > 0.95;
+  EXPECT_FALSE(CR::internal::segmentation::merge_thin_pieces(s, 0, 1, 0.01));
+  for(auto f : s.mesh.faces())
+    EXPECT_EQ(s.patch[f], 0u);
+  for(auto f : s.mesh.faces())
+    s.patch[f] = centroid_x(f) > 0.5;
+  EXPECT_TRUE(CR::internal::segmentation::merge_thin_pieces(s, 0, 1, 0.01));
+  for(auto f : s.mesh.faces())
+    EXPECT_EQ(s.patch[f], std::size_t(centroid_x(f) > 0.5));
+}
+
+TEST(ThinPatches, ShortFeatureChainsInsideAPatchAreDropped)
+{
+  // The feature chain of FeatureInsideAPatchIsKept (length 0.5) is kept at a snap distance of
+  // 0.01 and dropped at 0.1: a slit shorter than the target edge length cannot be meshed.
+  Mesh square;
+  CGAL::make_grid(20, 20, square, [](int i, int j) { return K::Point_3(i / 20., j / 20., 0.); }, true);
+  auto feature = square.add_property_map<Mesh::Edge_index, bool>("e:feature", false).first;
+  for(auto e : square.edges())
+  {
+    const K::Point_3 &a = square.point(square.vertex(e, 0)), &b = square.point(square.vertex(e, 1));
+    feature[e] = a.y() == 0.5 && b.y() == 0.5 && (std::min)(a.x(), b.x()) > 0.24 && (std::max)(a.x(), b.x()) < 0.76;
+  }
+  for(const double snap : {0.01, 0.1})
+  {
+    CR::Poly_annulus_segmentation s;
+    CR::segment_into_poly_annuli(square, s, CR::parameters::snap_distance(snap, CGAL::parameters::edge_is_constrained_map(feature)));
+    EXPECT_EQ(s.dangling_feature_edges, snap < 0.05 ? 10u : 0u) << snap;
+  }
+}
+
+TEST(ThinPatches, CurvesOfChordsThatCannotGlueAreSampledMoreDensely)
+{
+  namespace R = CR::internal::remeshing;
+  // One halving doubles the samples of the curve it names (a sphere cut in two: one curve).
+  Mesh sphere;
+  make_sphere(sphere, 3);
+  CR::Poly_annulus_segmentation s;
+  CR::segment_into_poly_annuli(sphere, s);
+  const R::Curve_samples coarse = R::sample_boundary_curves(s, 0.1, 30.);
+  ASSERT_EQ(coarse.number_of_curves, 1u);
+  const R::Curve_samples fine = R::sample_boundary_curves(s, 0.1, 30., std::vector<int>{1});
+  EXPECT_NEAR(double(fine.points.size()) / double(coarse.points.size()), 2., 0.05);
+  EXPECT_EQ(fine.curve_of_chord.size(), fine.points.size()); // a closed curve: as many chords as samples
+
+  // A loop whose chords (2, 3) and (3, 4) cross chord (0, 1) in the plane, as a patch thinner than
+  // the sample spacing makes: the planar mesh cannot follow them, and they are reported.
+  R::Curve_samples samples;
+  std::vector<std::vector<R::Boundary_sample> > loops(1);
+  const std::vector<std::pair<double, double> > crossing{{0., 0.}, {4., 0.}, {4., 1.}, {2., -0.5}, {0., 1.}};
+  std::vector<std::size_t> ids;
+  for(std::size_t i = 0; i < crossing.size(); ++i)
+  {
+    loops[0].push_back(R::Boundary_sample{CGAL::Epick::Point_2(crossing[i].first, crossing[i].second), CGAL::Epick::Point_3(0., 0., 0.)});
+    ids.push_back(i);
+    samples.curve_of_chord[std::minmax(i, (i + 1) % crossing.size())] = 0;
+  }
+  const auto no_size_bound = [](const CGAL::Epick::Point_2&) { return 100.; };
+  const R::Planar_mesh planar = R::mesh_planar_domain<CGAL::Epick>(loops, 20., no_size_bound, 0, false);
+  const auto not_glued = R::chords_not_glued(loops, planar, ids, samples);
+  for(const std::pair<std::size_t, std::size_t> chord : {std::make_pair(0, 1), std::make_pair(2, 3), std::make_pair(3, 4)})
+    EXPECT_NE(std::find(not_glued.begin(), not_glued.end(), chord), not_glued.end()) << chord.first << "-" << chord.second;
+
+  // A simple polygon is glued everywhere.
+  loops[0][3].uv = CGAL::Epick::Point_2(2., 0.5);
+  const R::Planar_mesh simple = R::mesh_planar_domain<CGAL::Epick>(loops, 20., no_size_bound, 0, false);
+  EXPECT_TRUE(R::chords_not_glued(loops, simple, ids, samples).empty());
+}

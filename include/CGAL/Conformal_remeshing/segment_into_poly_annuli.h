@@ -432,24 +432,163 @@ inline std::pair<Epick::Point_3, std::array<Epick::Vector_3, 3> > principal_axes
 } // namespace segmentation
 } // namespace internal
 
+namespace internal {
+namespace segmentation {
+
+// After a cut of one patch into the labels `a` and `b`: each edge-connected piece of either label
+// narrower than `min_width` (twice its area over its perimeter, the width of a strip) joins the
+// piece across the cut with which it shares the longest boundary. A plane that grazes a long
+// sliver face leaves such pieces; a patch thinner than the target edge length has a nearly
+// degenerate sample polygon in the plane, which cannot be meshed. Returns false if one label is
+// left without faces (the cut is undone).
+inline bool merge_thin_pieces(Segmentation& s, std::size_t a, std::size_t b, double min_width)
+{
+  Mesh& m = s.mesh;
+  const std::size_t none = std::size_t(-1);
+  std::map<Segmentation::Face, std::size_t> piece;
+  std::vector<Segmentation::Face> seeds;
+  for(Segmentation::Face f : m.faces())
+    if(s.patch[f] == a || s.patch[f] == b)
+      piece[f] = none;
+  std::vector<double> area, perimeter;
+  std::vector<std::size_t> label;
+  std::vector<std::vector<Segmentation::Face> > faces_of_piece;
+  for(auto& seed : piece)
+  {
+    if(seed.second != none)
+      continue;
+    const std::size_t id = area.size();
+    area.push_back(0.);
+    perimeter.push_back(0.);
+    label.push_back(s.patch[seed.first]);
+    faces_of_piece.emplace_back();
+    seed.second = id;
+    std::vector<Segmentation::Face> stack{seed.first};
+    while(!stack.empty())
+    {
+      const Segmentation::Face f = stack.back();
+      stack.pop_back();
+      faces_of_piece[id].push_back(f);
+      const auto h0 = m.halfedge(f);
+      area[id] += 0.5 * std::sqrt(CGAL::cross_product(m.point(m.target(h0)) - m.point(m.source(h0)),
+                                                      m.point(m.target(m.next(h0))) - m.point(m.source(h0))).squared_length());
+      for(auto h : CGAL::halfedges_around_face(h0, m))
+      {
+        const Segmentation::Face g = m.face(m.opposite(h));
+        if(g == Mesh::null_face() || s.is_feature[m.edge(h)] || s.patch[g] != s.patch[f])
+        {
+          perimeter[id] += std::sqrt(CGAL::squared_distance(m.point(m.source(h)), m.point(m.target(h))));
+          continue;
+        }
+        std::size_t& seen = piece.at(g);
+        if(seen == none)
+        {
+          seen = id;
+          stack.push_back(g);
+        }
+      }
+    }
+  }
+  for(std::size_t id = 0; id < area.size(); ++id)
+  {
+    if(!(2. * area[id] < min_width * perimeter[id]))
+      continue;
+    std::map<std::size_t, double> shared; // neighbouring piece across the cut -> boundary length
+    for(Segmentation::Face f : faces_of_piece[id])
+      for(auto h : CGAL::halfedges_around_face(m.halfedge(f), m))
+      {
+        const Segmentation::Face g = m.face(m.opposite(h));
+        if(g != Mesh::null_face() && !s.is_feature[m.edge(h)] && piece.count(g) && piece[g] != id)
+          shared[piece[g]] += std::sqrt(CGAL::squared_distance(m.point(m.source(h)), m.point(m.target(h))));
+      }
+    if(shared.empty())
+      continue;
+    const auto longest = std::max_element(shared.begin(), shared.end(),
+                                          [](const auto& x, const auto& y) { return x.second < y.second; });
+    label[id] = label[longest->first];
+    for(Segmentation::Face f : faces_of_piece[id])
+    {
+      s.patch[f] = label[id];
+      piece[f] = longest->first;
+    }
+  }
+  return std::count(label.begin(), label.end(), a) > 0 && std::count(label.begin(), label.end(), b) > 0;
+}
+
+// Feature chains inside a patch (the same patch on both sides) shorter than `min_length` in all
+// are no features: they separate nothing, and a slit shorter than the target edge length opens
+// so little in the plane that one output vertex would join both of its sides.
+inline void drop_short_dangling_features(Segmentation& s, double min_length)
+{
+  Mesh& m = s.mesh;
+  std::vector<char> seen(m.number_of_edges(), 0);
+  for(Segmentation::Edge seed : m.edges())
+  {
+    if(seen[seed] || !s.is_feature[seed] || s.is_patch_boundary(seed))
+      continue;
+    std::vector<Segmentation::Edge> chain, stack{seed};
+    seen[seed] = 1;
+    double length = 0.;
+    while(!stack.empty())
+    {
+      const Segmentation::Edge e = stack.back();
+      stack.pop_back();
+      chain.push_back(e);
+      length += std::sqrt(CGAL::squared_distance(m.point(m.vertex(e, 0)), m.point(m.vertex(e, 1))));
+      for(int k = 0; k < 2; ++k)
+        for(auto h : CGAL::halfedges_around_target(m.halfedge(m.vertex(e, k)), m))
+        {
+          const Segmentation::Edge next = m.edge(h);
+          if(!seen[next] && s.is_feature[next] && !s.is_patch_boundary(next))
+          {
+            seen[next] = 1;
+            stack.push_back(next);
+          }
+        }
+    }
+    if(length < min_length)
+      for(Segmentation::Edge e : chain)
+        s.is_feature[e] = false;
+  }
+}
+
+} // namespace segmentation
+} // namespace internal
+
 /// \ingroup PkgConformalRemeshingRef
 /// Cuts patch `patch_faces` of `s` in two by the plane through its centroid orthogonal to one
 /// of its principal axes (`axis` 0: the axis of least extent, 2: of largest), trying the other
 /// axes if that plane leaves the patch whole. The negative side gets the label
 /// `s.number_of_patches` (incremented); call `s.renumber_patches()` after the last bisection.
-/// Vertices closer than `snap` to the plane are taken as on it.
+/// Vertices closer than `snap` to the plane are taken as on it, and pieces narrower than
+/// `5 * snap` that the cut leaves join the other side (pieces of grazed slivers), unless every
+/// plane leaves only such pieces.
 /// \returns false if no plane cuts the patch
 inline bool bisect_patch(Poly_annulus_segmentation& s, const std::vector<Poly_annulus_segmentation::Face>& patch_faces,
                          int axis, double snap)
 {
+  const std::size_t label = s.patch[patch_faces.front()];
   const auto frame = internal::segmentation::principal_axes(s, patch_faces);
-  for(int k = 0; k < 3; ++k)
-    if(internal::segmentation::cut_by_plane(s, patch_faces, Epick::Plane_3(frame.first, frame.second[(axis + k) % 3]), snap,
-                                            s.number_of_patches))
+  // Thin pieces are merged back unless every cut makes only thin pieces (a strip narrower than
+  // that): then the first cut is taken as it is.
+  for(int attempt = 0; attempt < 6; ++attempt)
+  {
+    const int k = attempt % 3;
+    const double min_width = attempt < 3 ? 5. * snap : 0.;
+    // Listed afresh: a cut whose pieces all merged back has split faces all the same.
+    const std::size_t negative = s.number_of_patches;
+    if(!internal::segmentation::cut_by_plane(s, attempt == 0 ? patch_faces : s.faces_of_patch(label),
+                                             Epick::Plane_3(frame.first, frame.second[(axis + k) % 3]), snap, negative))
+      continue;
+    if(internal::segmentation::merge_thin_pieces(s, label, negative, min_width))
     {
       ++s.number_of_patches;
       return true;
     }
+    for(Poly_annulus_segmentation::Face f : s.faces_of_patch(negative))
+      s.patch[f] = label;
+    --s.plane_cuts;
+  }
   return false;
 }
 
@@ -488,7 +627,7 @@ inline bool bisect_patch(Poly_annulus_segmentation& s, const std::vector<Poly_an
 ///     \cgalParamDefault{none}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{snap_distance}
-///     \cgalParamDescription{vertices closer to a cutting plane than this are taken as on it (`Conformal_remeshing::parameters::snap_distance()`)}
+///     \cgalParamDescription{vertices closer to a cutting plane than this are taken as on it (`Conformal_remeshing::parameters::snap_distance()`); the scale of the smallest detail kept: pieces of a bisection narrower than 5 times this join the other side, and feature chains inside a patch shorter than 10 times this are dropped (`remesh_conformal()` passes a tenth of the target edge length)}
 ///     \cgalParamDefault{0.001 times the bounding-box diagonal}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
@@ -605,6 +744,7 @@ void segment_into_poly_annuli(const TriangleMesh& input, Poly_annulus_segmentati
     s.renumber_patches();
   }
 
+  internal::segmentation::drop_short_dangling_features(s, 10. * snap);
   s.feature_edges = 0;
   s.dangling_feature_edges = 0;
   for(Poly_annulus_segmentation::Edge e : s.mesh.edges())

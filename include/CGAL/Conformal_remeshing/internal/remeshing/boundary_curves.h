@@ -33,15 +33,20 @@ struct Curve_samples
   /// from `first`, increasing
   std::map<std::pair<Vertex, Vertex>, std::vector<std::pair<double, std::size_t> > > on_edge;
   std::size_t number_of_curves = 0;
+  /// the curve of each chord between consecutive samples of a curve, by its sample pair (smaller first)
+  std::map<std::pair<std::size_t, std::size_t>, std::size_t> curve_of_chord;
 };
 
 /// Splits the patch boundaries of `s` (edges between two patches, borders, and sharp features
 /// inside a patch, along which the patch is slit open) into curves
 /// between junctions (vertices where other than two boundary edges meet, where the pair of
 /// patches changes, or where the curve turns by more than `corner_degrees`), and samples each
-/// curve at spacing close to `spacing`. A curve that closes on itself gets at least 3 pieces,
-/// and two curves with the same ends at least 2 each, so every patch loop has 3 samples or more.
-inline Curve_samples sample_boundary_curves(const Poly_annulus_segmentation& s, double spacing, double corner_degrees)
+/// curve at spacing close to `spacing`, divided by 2^`halvings[c]` on curve `c` when given (the
+/// curves are numbered in the same order by every call on the same segmentation). A curve that
+/// closes on itself gets at least 3 pieces, and a slit or two curves with the same ends at least
+/// 2 each, so every patch loop has 3 samples or more.
+inline Curve_samples sample_boundary_curves(const Poly_annulus_segmentation& s, double spacing, double corner_degrees,
+                                            const std::vector<int>& halvings = std::vector<int>())
 {
   typedef Poly_annulus_segmentation::Mesh Mesh;
   typedef Mesh::Halfedge_index Halfedge;
@@ -117,17 +122,30 @@ inline Curve_samples sample_boundary_curves(const Poly_annulus_segmentation& s, 
     samples.points.push_back(m.point(v));
     samples.face.push_back(any_face(outgoing[v].front()));
   };
-  for(const auto& curve : curves)
+  for(std::size_t c = 0; c < curves.size(); ++c)
   {
+    const std::vector<Vertex>& curve = curves[c];
+    const double curve_spacing = c < halvings.size() ? std::ldexp(spacing, -halvings[c]) : spacing;
     std::vector<double> length(curve.size() - 1);
     double total = 0.;
     for(std::size_t i = 0; i + 1 < curve.size(); ++i)
       total += length[i] = std::sqrt(CGAL::squared_distance(m.point(curve[i]), m.point(curve[i + 1])));
-    const std::size_t fewest = curve.front() == curve.back() ? 3 : curves_between[std::minmax(curve.front(), curve.back())] > 1 ? 2 : 1;
-    const std::size_t pieces = (std::max<std::size_t>)(fewest, std::size_t(std::round(total / spacing)));
+    // A slit (a feature inside a patch, the same patch on both sides) is traversed once per side
+    // by the same loop: with one piece, a slit whose ends are both free would be a loop of two
+    // samples, a polygon of no area in the plane.
+    const Halfedge first_edge = m.halfedge(curve[0], curve[1]);
+    const bool slit = patch_of(first_edge) == patch_of(m.opposite(first_edge));
+    const std::size_t fewest = curve.front() == curve.back() ? 3
+                               : (slit || curves_between[std::minmax(curve.front(), curve.back())] > 1) ? 2 : 1;
+    const std::size_t pieces = (std::max<std::size_t>)(fewest, std::size_t(std::round(total / curve_spacing)));
     const double step = total / double(pieces);
     vertex_sample(curve.front());
     vertex_sample(curve.back());
+    std::size_t previous = samples.at_vertex[curve.front()];
+    auto chord_to = [&](std::size_t next) {
+      samples.curve_of_chord[std::minmax(previous, next)] = c;
+      previous = next;
+    };
     std::size_t e = 0;
     double before = 0.; // curve length before edge e
     for(std::size_t k = 1; k < pieces; ++k)
@@ -140,9 +158,11 @@ inline Curve_samples sample_boundary_curves(const Poly_annulus_segmentation& s, 
       const Halfedge h = m.halfedge(curve[e], curve[e + 1]);
       const bool forward = curve[e] < curve[e + 1];
       samples.on_edge[std::minmax(curve[e], curve[e + 1])].emplace_back(forward ? t : 1. - t, samples.points.size());
+      chord_to(samples.points.size());
       samples.points.push_back(Epick::Point_3(a.x() + t * (b.x() - a.x()), a.y() + t * (b.y() - a.y()), a.z() + t * (b.z() - a.z())));
       samples.face.push_back(any_face(h));
     }
+    chord_to(samples.at_vertex[curve.back()]);
   }
   for(auto& edge : samples.on_edge)
     std::sort(edge.second.begin(), edge.second.end());

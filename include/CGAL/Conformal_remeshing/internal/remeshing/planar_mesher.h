@@ -147,13 +147,20 @@ class Fixed_boundary_mesher_2
   // Local Delaunay conformity of constrained edges, also for a point about to be inserted. The
   // conflict zone reports its boundary edges from the face outside it, `f`: the edge stays
   // locally Delaunay if the point is not inside the circle through the edge and `f`'s far vertex.
+  // Across a convex-hull edge (`f` infinite) the point must lie strictly inside: a circumcentre
+  // of a thin triangle beside the hull would otherwise be inserted on the edge or beyond it,
+  // splitting a boundary chord that the neighbouring patch shares.
   struct Conforming : CGAL::Mesh_2::Is_locally_conforming_Delaunay<CDT>
   {
     using CGAL::Mesh_2::Is_locally_conforming_Delaunay<CDT>::operator();
     bool operator()(const CDT& cdt, const typename CDT::Face_handle& f, int i, const typename CDT::Point& p) const
     {
       if(cdt.is_infinite(f))
-        return true;
+      {
+        const int at_infinity = f->index(cdt.infinite_vertex());
+        return CGAL::orientation(f->vertex(CDT::ccw(at_infinity))->point(), f->vertex(CDT::cw(at_infinity))->point(), p)
+               == CGAL::RIGHT_TURN;
+      }
       return CGAL::side_of_bounded_circle(f->vertex(CDT::cw(i))->point(), f->vertex(CDT::ccw(i))->point(),
                                           f->vertex(i)->point(), p) != CGAL::ON_BOUNDED_SIDE;
     }
