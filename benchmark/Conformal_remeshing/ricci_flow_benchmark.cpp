@@ -17,6 +17,8 @@
 #include <CGAL/Conformal_remeshing/Intrinsic_triangulation.h>
 #include <CGAL/Conformal_remeshing/discrete_ricci_flow.h>
 
+#include "timing.h"
+
 #ifdef CGAL_CONFORMAL_REMESHING_WITH_CHOLMOD
 #include <Eigen/CholmodSupport>
 #endif
@@ -259,12 +261,6 @@ std::vector<std::string> split(const std::string& s)
   return out;
 }
 
-double median(std::vector<double> v)
-{
-  std::sort(v.begin(), v.end());
-  return v.empty() ? 0. : (v.size() % 2 ? v[v.size() / 2] : 0.5 * (v[v.size() / 2 - 1] + v[v.size() / 2]));
-}
-
 } // namespace
 
 int main(int argc, char** argv)
@@ -304,7 +300,7 @@ int main(int argc, char** argv)
         auto med = [&](double Case_result::*m) {
           std::vector<double> v;
           for(const auto& r : rs) v.push_back(r.*m);
-          return median(v);
+          return CR::benchmarks::median(v);
         };
         const Case_result& r0 = rs.front();
         const double t_build = med(&Case_result::t_build), t_flips = med(&Case_result::t_flips),
