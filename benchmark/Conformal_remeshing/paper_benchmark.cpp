@@ -188,6 +188,7 @@ void write_library_report(tools::Json_writer& json, const CR::Remeshing_report& 
       .field("max_scale_ratio", r.max_scale_ratio).field("edge_splits", edge_splits)
       .field("boundary_splits", boundary_splits).field("welded_vertices", welded_vertices).end_object();
   json.key("meshing").begin_object().field("boundary_curves", r.boundary_curves).field("refined_boundary_curves", r.refined_boundary_curves)
+      .field("split_diagonals", r.split_diagonals)
       .field("boundary_samples", r.boundary_samples).field("clamped_vertices", r.clamped_vertices).end_object();
 }
 

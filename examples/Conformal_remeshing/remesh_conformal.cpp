@@ -3,7 +3,7 @@
 //   remesh_conformal IN OUT [--target-edge-length L | --relative-edge-length R] [--min-angle DEG]
 //                    [--features-angle DEG] [--patches FILE] [--cut-plane a,b,c,d]...
 //                    [--save-patches DIR] [--sequential] [--report FILE.json] [--plots DIR] [--quiet]
-//                    [--time-limit SECONDS] [--optimization-rounds N]
+//                    [--time-limit SECONDS] [--optimization-rounds N] [--chord-error E]
 //
 // Progress goes to standard error; OUT is written completely or not at all. Exit codes: 0
 // success, 1 the input cannot be remeshed (defects, unsupported topology, failed flattening),
@@ -44,7 +44,7 @@ const char* usage =
   "usage: remesh_conformal IN OUT [--target-edge-length L | --relative-edge-length R] [--min-angle DEG]\n"
   "                        [--features-angle DEG] [--patches FILE] [--cut-plane a,b,c,d]...\n"
   "                        [--save-patches DIR] [--sequential] [--report FILE.json] [--plots DIR] [--quiet]\n"
-  "                        [--time-limit SECONDS] [--optimization-rounds N]\n"
+  "                        [--time-limit SECONDS] [--optimization-rounds N] [--chord-error E]\n"
   "  IN, OUT                 mesh files (.off .obj .ply .stl); OUT is written atomically\n"
   "  --target-edge-length L  target edge length in the input's units\n"
   "  --relative-edge-length R  target edge length as a fraction of the bounding-box diagonal (default 0.01)\n"
@@ -59,6 +59,8 @@ const char* usage =
   "  --quiet                 no progress messages\n"
   "  --time-limit SECONDS    give up (exit code 3, no output written) if reading and remeshing take longer\n"
   "  --optimization-rounds N rounds of flips and smoothing judged on the surface after the refinement (default 5, 0: none)\n"
+  "  --chord-error E         shorter edges where the surface bends, so that chords deviate from it by at most E\n"
+  "                          (input units; down to 1/16 of the target length; default 0: uniform)\n"
   "Any orientable, edge-manifold triangle mesh: closed or open, any genus, several components.\n"
   "exit code: 0 success, 1 the input cannot be remeshed, 2 the tool could not run, 3 time limit exceeded\n";
 
@@ -67,7 +69,7 @@ struct Options
   std::string input, output, report, plots, patches, save_patches;
   double target = 0., relative = 0.01, min_angle = 28., features_angle = 60.;
   double time_limit = std::numeric_limits<double>::infinity();
-  double optimization_rounds = 5.;
+  double optimization_rounds = 5., chord_error = 0.;
   std::vector<K::Plane_3> planes;
   bool quiet = false, sequential = false;
 };
@@ -135,6 +137,8 @@ bool parse(int argc, char** argv, Options& o)
     else if(arg == "--optimization-rounds")
       ok = number(o.optimization_rounds) && o.optimization_rounds >= 0. && o.optimization_rounds <= 100.
            && o.optimization_rounds == std::floor(o.optimization_rounds);
+    else if(arg == "--chord-error")
+      ok = number(o.chord_error) && o.chord_error >= 0.;
     else if(!arg.empty() && arg[0] != '-' && o.input.empty())
       o.input = arg;
     else if(!arg.empty() && arg[0] != '-' && o.output.empty())
@@ -226,11 +230,11 @@ int main(int argc, char** argv)
   const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin())
                                     + CGAL::square(box.zmax() - box.zmin()));
   const double target = o.target > 0. ? o.target : o.relative * diagonal;
-  const auto np = CR::parameters::optimization_rounds(int(o.optimization_rounds), CR::parameters::target_edge_length(
+  const auto np = CR::parameters::maximum_chord_error(o.chord_error, CR::parameters::optimization_rounds(int(o.optimization_rounds), CR::parameters::target_edge_length(
     target, CR::parameters::minimum_angle(
               o.min_angle, CR::parameters::features_angle(
                              o.features_angle, CR::parameters::cut_planes(
-                                                 o.planes, CR::parameters::progress(progress, CGAL::parameters::face_patch_map(patch_of)))))));
+                                                 o.planes, CR::parameters::progress(progress, CGAL::parameters::face_patch_map(patch_of))))))));
 
   if(!o.save_patches.empty())
   {
@@ -304,7 +308,8 @@ int main(int argc, char** argv)
       json.key("segmentation").begin_object().field("patches", report.number_of_patches)
           .field("plane_cuts", report.plane_cuts).field("patch_bisections", report.patch_bisections)
           .field("feature_edges", report.feature_edges).field("dangling_feature_edges", report.dangling_feature_edges)
-          .field("boundary_curves", report.boundary_curves).field("refined_boundary_curves", report.refined_boundary_curves).end_object();
+          .field("boundary_curves", report.boundary_curves).field("refined_boundary_curves", report.refined_boundary_curves)
+          .field("split_diagonals", report.split_diagonals).end_object();
       json.key("flattening").begin_object().field("max_iterations", report.max_newton_iterations)
           .field("max_curvature_error", report.max_curvature_error).field("flips", report.flips)
           .field("max_scale_ratio", report.max_scale_ratio).end_object();

@@ -14,6 +14,7 @@
 #include <CGAL/Conformal_remeshing/internal/remeshing/boundary_curves.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/planar_locator.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/planar_mesher.h>
+#include <CGAL/Conformal_remeshing/internal/remeshing/sizing.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/surface_optimization.h>
 #include <CGAL/Conformal_remeshing/segment_into_poly_annuli.h>
 
@@ -30,6 +31,7 @@
 #include <functional>
 #include <iterator>
 #include <map>
+#include <numeric>
 #include <set>
 #include <sstream>
 #include <string>
@@ -54,6 +56,8 @@ CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(smoothing_iterations)
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(optimization_rounds)
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(maximum_scale_ratio)
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(progress)
+CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(sizing_field)
+CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(maximum_chord_error)
 
 namespace CGAL {
 namespace Conformal_remeshing {
@@ -77,6 +81,7 @@ struct Remeshing_report
   std::size_t boundary_curves = 0;
   std::size_t boundary_samples = 0;
   std::size_t refined_boundary_curves = 0; ///< times a boundary curve of a thin patch was sampled twice as densely
+  std::size_t split_diagonals = 0; ///< times a patch split an edge between two samples that another patch also has
   std::size_t output_vertices = 0;
   std::size_t output_faces = 0;
   /// output vertices whose planar position fell outside the flat patch (between a boundary
@@ -142,25 +147,33 @@ struct Remeshed_patch
   std::vector<Epick::Point_3> interior_points;
   std::vector<Poly_annulus_segmentation::Face> interior_faces; // the segmented face of each
   std::vector<std::array<std::size_t, 3> > triangles;
-  /// boundary chords (pairs of sample indices) the triangles would not glue at (see `chords_not_glued()`):
+  /// boundary chords (pairs of sample indices) the triangles would not glue at (see `check_glue()`):
   /// the triangles are not valid then
   std::vector<std::pair<std::size_t, std::size_t> > chords_not_glued;
+  /// other edges between two samples (smaller index first, once per planar edge), which no other
+  /// patch, nor another edge of this one, may join
+  std::vector<std::pair<std::size_t, std::size_t> > sample_diagonals;
   std::size_t clamped_vertices = 0;
   std::size_t flips = 0; // by the optimization
   double seconds_planar_meshing = 0., seconds_optimization = 0., seconds_pull_back = 0.;
 };
 
-// The glue's preconditions: every chord between consecutive samples of a loop is an edge of one
-// planar triangle, traversed in the loop's direction, so that the neighbour, which traverses it
-// the other way, closes the surface there; and no other edge joins the two samples of a chord
-// (a diagonal between two samples that the patch touches elsewhere would make a third triangle
-// on that chord). Where a patch is thinner than the sample spacing, a chord of one side can cross
-// the other side in the plane. The offending chords are returned, as pairs of sample indices in
-// `samples`, for their curves to be sampled more densely.
-inline std::vector<std::pair<std::size_t, std::size_t> > chords_not_glued(const std::vector<std::vector<Boundary_sample> >& loops,
-                                                                        const Planar_mesh& planar,
-                                                                        const std::vector<std::size_t>& boundary_ids,
-                                                                        const Curve_samples& samples)
+// The glue's preconditions, for one patch: every chord between consecutive samples of a loop is
+// an edge of one planar triangle, traversed in the loop's direction, so that the neighbour, which
+// traverses it the other way, closes the surface there; and no other edge joins the two samples
+// of a chord (a diagonal between two samples that the patch touches elsewhere would make a third
+// triangle on that chord). Where a patch is thinner than the sample spacing, a chord of one side
+// can cross the other side in the plane. The offending chords are returned, as pairs of sample
+// indices in `samples`, for their curves to be sampled more densely. Also returned: the other
+// edges between two samples, diagonals across the patch, which no second patch may have (four
+// triangles on one edge): see `remesh_conformal()`.
+struct Glue_check
+{
+  std::vector<std::pair<std::size_t, std::size_t> > chords_not_glued, sample_diagonals;
+};
+
+inline Glue_check check_glue(const std::vector<std::vector<Boundary_sample> >& loops, const Planar_mesh& planar,
+                             const std::vector<std::size_t>& boundary_ids, const Curve_samples& samples)
 {
   std::set<std::pair<std::size_t, std::size_t> > loop_chords;
   std::size_t first = 0;
@@ -170,7 +183,7 @@ inline std::vector<std::pair<std::size_t, std::size_t> > chords_not_glued(const 
       loop_chords.emplace(first + i, first + (i + 1) % loop.size());
     first += loop.size();
   }
-  std::set<std::pair<std::size_t, std::size_t> > followed, result;
+  std::set<std::pair<std::size_t, std::size_t> > followed, not_glued, local_diagonals;
   for(const auto& t : planar.triangles)
     for(int c = 0; c < 3; ++c)
     {
@@ -182,20 +195,29 @@ inline std::vector<std::pair<std::size_t, std::size_t> > chords_not_glued(const 
       {
         const auto pair = std::minmax(boundary_ids[edge.first], boundary_ids[edge.second]);
         if(samples.curve_of_chord.count(pair))
-          result.insert(pair);
+          not_glued.insert(pair);
+        else
+          local_diagonals.insert(std::minmax(edge.first, edge.second));
       }
     }
   for(const auto& chord : loop_chords)
     if(!followed.count(chord))
-      result.insert(std::minmax(boundary_ids[chord.first], boundary_ids[chord.second]));
-  return std::vector<std::pair<std::size_t, std::size_t> >(result.begin(), result.end());
+      not_glued.insert(std::minmax(boundary_ids[chord.first], boundary_ids[chord.second]));
+  Glue_check result;
+  result.chords_not_glued.assign(not_glued.begin(), not_glued.end());
+  // Once per planar edge: a patch that meets itself (at a slit) can have the same pair twice.
+  for(const auto& d : local_diagonals)
+    result.sample_diagonals.push_back(std::minmax(boundary_ids[d.first], boundary_ids[d.second]));
+  return result;
 }
 
 // Planar Delaunay refinement of a flattened patch with the shared boundary samples, then the
 // pull-back of the new points onto the surface through the flow's correspondence.
+// No edge joins the two samples of a pair in `diagonals_to_split` (sample indices, smaller first).
 inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, const Extracted_patch& patch,
-                                             const Curve_samples& samples, double h, double min_angle,
-                                             int smoothing_iterations, int optimization_rounds)
+                                             const Curve_samples& samples, const Sizing& sizing, double min_angle,
+                                             int smoothing_iterations, int optimization_rounds,
+                                             const std::set<std::pair<std::size_t, std::size_t> >& diagonals_to_split = {})
 {
   typedef std::chrono::steady_clock Clock;
   Clock::time_point start = Clock::now();
@@ -207,18 +229,37 @@ inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, c
     double s = 0.;
     for(int c = 0; c < 3; ++c)
       s += l.coordinates[c] * scale[flat.triangles[l.triangle][c]];
+    double size = sizing.target();
+    if(!sizing.is_uniform())
+    {
+      const Domain_point q = flat.to_surface(l.triangle, l.coordinates);
+      size = sizing.at(q.point, patch.segmented_face[q.input_face]);
+    }
     // The refinement bounds the longest edge of a triangle; 1.4 h leaves edges near h on average.
-    return 1.4 * h * s;
+    return 1.4 * size * s;
   };
   std::vector<std::vector<Boundary_sample> > loops;
   loops.push_back(loop_samples(flat.outer_boundary, patch, samples, result.boundary_ids));
   for(const auto& hole : flat.holes)
     loops.push_back(loop_samples(hole, patch, samples, result.boundary_ids));
-  Planar_mesh planar = mesh_planar_domain<Epick>(loops, min_angle, planar_size, smoothing_iterations, false);
+  std::vector<std::pair<std::size_t, std::size_t> > local_diagonals_to_split;
+  if(!diagonals_to_split.empty())
+  {
+    std::map<std::size_t, std::vector<std::size_t> > positions; // a slit's samples are on two sides
+    for(std::size_t i = 0; i < result.boundary_ids.size(); ++i)
+      positions[result.boundary_ids[i]].push_back(i);
+    for(const auto& pair : diagonals_to_split)
+      if(positions.count(pair.first) && positions.count(pair.second))
+        for(std::size_t i : positions[pair.first])
+          for(std::size_t j : positions[pair.second])
+            local_diagonals_to_split.emplace_back(i, j);
+  }
+  Planar_mesh planar = mesh_planar_domain<Epick>(loops, min_angle, planar_size, smoothing_iterations, false,
+                                                 local_diagonals_to_split);
   if(planar.number_of_samples != result.boundary_ids.size())
     throw Error(Error_code::NOT_AN_EMBEDDING, "remesh_conformal: the boundary samples of a patch overlap in the plane");
   result.seconds_planar_meshing = std::chrono::duration<double>(Clock::now() - start).count();
-  result.chords_not_glued = chords_not_glued(loops, planar, result.boundary_ids, samples);
+  result.chords_not_glued = check_glue(loops, planar, result.boundary_ids, samples).chords_not_glued;
   if(!result.chords_not_glued.empty())
     return result;
 
@@ -240,9 +281,13 @@ inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, c
     for(std::size_t i = planar.number_of_samples; i < planar.points.size(); ++i)
       positions.push_back(lift(planar.points[i]));
     result.flips = optimize_on_surface(planar.points, positions, planar.triangles, planar.number_of_samples, lift,
-                                       min_angle, 1.4 * h, optimization_rounds).flips;
+                                       min_angle, 1.4 * sizing.target(), optimization_rounds, result.boundary_ids,
+                                       diagonals_to_split).flips;
   }
   result.seconds_optimization = std::chrono::duration<double>(Clock::now() - start).count();
+  // The optimizer keeps every chord (it never flips a boundary edge) and makes none of the
+  // diagonals to split, but it may have made or removed others.
+  result.sample_diagonals = check_glue(loops, planar, result.boundary_ids, samples).sample_diagonals;
 
   start = Clock::now();
   for(std::size_t i = planar.number_of_samples; i < planar.points.size(); ++i)
@@ -373,6 +418,14 @@ void for_each_patch(std::size_t n, const Task& task)
 ///     \cgalParamDescription{the target edge length as a fraction of the bounding-box diagonal}
 ///     \cgalParamDefault{0.01}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{sizing_field}
+///     \cgalParamDescription{a callable `double(const CGAL::Epick::Point_3&)` giving the wanted edge length at a point of the input surface; the target edge length stays the upper bound, and sizes below 1/16 of it count as 1/16 (`Conformal_remeshing::parameters::sizing_field()`)}
+///     \cgalParamDefault{none: uniform}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{maximum_chord_error}
+///     \cgalParamDescription{curvature-adaptive sizing: where the surface bends, edges are shortened so that a chord of the largest normal curvature deviates from the surface by at most this distance (input units), graded to grow by at most half the distance, between 1/16 of the target edge length and the target (`Conformal_remeshing::parameters::maximum_chord_error()`)}
+///     \cgalParamDefault{0: none}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{minimum_angle}
 ///     \cgalParamDescription{the minimum angle of the planar refinement in degrees}
 ///     \cgalParamDefault{28}
@@ -455,6 +508,11 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
     throw Error(Error_code::INVALID_INPUT, "remesh_conformal: the maximum scale ratio must be above 1");
   if(optimization_rounds < 0)
     throw Error(Error_code::INVALID_INPUT, "remesh_conformal: the number of optimization rounds must not be negative");
+  const double chord_error = choose_parameter(get_parameter(np, internal_np::maximum_chord_error), 0.);
+  if(!(chord_error >= 0.) || !std::isfinite(chord_error))
+    throw Error(Error_code::INVALID_INPUT, "remesh_conformal: the maximum chord error must be positive (or 0: none)");
+  const internal::remeshing::Sizing::Field sizing_field = choose_parameter(get_parameter(np, internal_np::sizing_field),
+                                                                           internal::remeshing::Sizing::Field());
   report.target_edge_length = h;
   auto fim = CGAL::get_initialized_face_index_map(input, np);
   auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(vertex_point, input));
@@ -557,23 +615,37 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
   start = Clock::now();
   progress("meshing " + std::to_string(patches.size()) + " patches");
   // A patch thinner than the sample spacing can have a boundary chord that crosses its other side
-  // in the plane (see `chords_not_glued()`): the curves of such chords are sampled twice as
-  // densely and the patches meshed again, up to `max_halvings` times.
-  const int max_halvings = 6;
+  // in the plane (see `check_glue()`): the curves of such chords are sampled twice as densely and
+  // every patch is meshed again (resampling renumbers the samples), up to `max_halvings` times.
+  // Where two patches join the same two samples by a diagonal (both flattenings nearly straight
+  // along a short curve between junctions), all but the first of them split it and are meshed
+  // again; splitting adds no edge between samples, so this ends unless smoothing brings new ones.
+  const internal::remeshing::Sizing sizing(segmentation, h, sizing_field, chord_error);
+  const int max_halvings = 6, max_diagonal_rounds = 4;
   std::vector<int> halvings;
   internal::remeshing::Curve_samples samples;
   std::vector<internal::remeshing::Remeshed_patch> remeshed(patches.size());
-  for(int attempt = 0;; ++attempt)
+  std::vector<std::set<std::pair<std::size_t, std::size_t> > > diagonals_to_split;
+  std::vector<std::size_t> to_mesh;
+  bool resample = true;
+  for(int diagonal_round = 0;;)
   {
-    samples = internal::remeshing::sample_boundary_curves(segmentation, h, corner, halvings);
-    halvings.resize(samples.number_of_curves, 0);
+    if(resample)
+    {
+      samples = internal::remeshing::sample_boundary_curves(segmentation, sizing, corner, halvings);
+      halvings.resize(samples.number_of_curves, 0);
+      diagonals_to_split.assign(patches.size(), {});
+      to_mesh.resize(patches.size());
+      std::iota(to_mesh.begin(), to_mesh.end(), std::size_t(0));
+    }
     failures.assign(patches.size(), std::string());
-    internal::remeshing::for_each_patch<ConcurrencyTag>(patches.size(), [&](std::size_t p) {
+    internal::remeshing::for_each_patch<ConcurrencyTag>(to_mesh.size(), [&](std::size_t i) {
+      const std::size_t p = to_mesh[i];
       try
       {
         time_limit.check("while meshing the patches");
-        remeshed[p] = internal::remeshing::remesh_flattened_patch(flattenings[p], patches[p], samples, h, min_angle, smoothing,
-                                                                  optimization_rounds);
+        remeshed[p] = internal::remeshing::remesh_flattened_patch(flattenings[p], patches[p], samples, sizing, min_angle, smoothing,
+                                                                  optimization_rounds, diagonals_to_split[p]);
       }
       catch(const Error& e)
       {
@@ -584,6 +656,7 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
     for(std::size_t p = 0; p < patches.size(); ++p)
       if(!failures[p].empty())
         throw Error(Error_code::NOT_AN_EMBEDDING, "remesh_conformal: patch " + std::to_string(p) + ": " + failures[p]);
+
     std::set<std::size_t> curves_to_refine;
     std::size_t first_failing = patches.size();
     for(std::size_t p = 0; p < patches.size(); ++p)
@@ -592,20 +665,45 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
         first_failing = (std::min)(first_failing, p);
         curves_to_refine.insert(samples.curve_of_chord.at(chord));
       }
-    if(curves_to_refine.empty())
+    resample = !curves_to_refine.empty();
+    if(resample)
+    {
+      const bool refinable = std::all_of(curves_to_refine.begin(), curves_to_refine.end(),
+                                         [&](std::size_t c) { return halvings[c] < max_halvings; });
+      if(!refinable)
+        throw Error(Error_code::NOT_AN_EMBEDDING,
+                    "remesh_conformal: patch " + std::to_string(first_failing) + ": its planar mesh does not glue to its neighbours at "
+                      + std::to_string(remeshed[first_failing].chords_not_glued.size())
+                      + " boundary chords (not triangle edges in the loop's direction, or joined twice) even with boundary samples "
+                      + std::to_string(1 << max_halvings) + " times denser");
+      progress("sampling " + std::to_string(curves_to_refine.size()) + " boundary curves of thin patches more densely");
+      for(std::size_t c : curves_to_refine)
+        ++halvings[c];
+      report.refined_boundary_curves += curves_to_refine.size();
+      continue;
+    }
+
+    std::map<std::pair<std::size_t, std::size_t>, std::vector<std::size_t> > patches_of_diagonal;
+    for(std::size_t p = 0; p < patches.size(); ++p)
+      for(const auto& diagonal : remeshed[p].sample_diagonals)
+        patches_of_diagonal[diagonal].push_back(p);
+    std::set<std::size_t> to_split;
+    for(const auto& d : patches_of_diagonal)
+      for(std::size_t i = 1; i < d.second.size(); ++i)
+      {
+        diagonals_to_split[d.second[i]].insert(d.first);
+        to_split.insert(d.second[i]);
+      }
+    if(to_split.empty())
       break;
-    const bool refinable = std::all_of(curves_to_refine.begin(), curves_to_refine.end(),
-                                       [&](std::size_t c) { return halvings[c] < max_halvings; });
-    if(!refinable)
-      throw Error(Error_code::NOT_AN_EMBEDDING,
-                  "remesh_conformal: patch " + std::to_string(first_failing) + ": its planar mesh does not glue to its neighbours at "
-                    + std::to_string(remeshed[first_failing].chords_not_glued.size())
-                    + " boundary chords (not triangle edges in the loop's direction, or joined twice) even with boundary samples "
-                    + std::to_string(1 << max_halvings) + " times denser");
-    progress("sampling " + std::to_string(curves_to_refine.size()) + " boundary curves of thin patches more densely");
-    for(std::size_t c : curves_to_refine)
-      ++halvings[c];
-    report.refined_boundary_curves += curves_to_refine.size();
+    if(++diagonal_round > max_diagonal_rounds)
+      throw Error(Error_code::NOT_AN_EMBEDDING, "remesh_conformal: patch " + std::to_string(*to_split.begin())
+                                                  + " still joins two boundary samples that another triangle edge joins "
+                                                  "(four triangles on one edge) after "
+                                                  + std::to_string(max_diagonal_rounds) + " rounds of splitting such diagonals");
+    progress("splitting diagonals shared by " + std::to_string(to_split.size() + 1) + " patches or more");
+    report.split_diagonals += to_split.size();
+    to_mesh.assign(to_split.begin(), to_split.end());
   }
   report.boundary_samples = samples.points.size();
   report.boundary_curves = samples.number_of_curves;

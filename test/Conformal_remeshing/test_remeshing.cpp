@@ -13,6 +13,7 @@
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
+#include <CGAL/Polygon_mesh_processing/stitch_borders.h>
 #include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -36,6 +37,7 @@ typedef CGAL::Epick K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 using remeshing_checks::check_remeshing;
 using remeshing_checks::diagonal;
+using remeshing_checks::check_topology_and_fidelity;
 
 
 TEST(RemeshConformal, WavyConcaveStrip)
@@ -85,6 +87,99 @@ TEST(RemeshConformal, TargetEdgeLengthControlsTheSize)
   EXPECT_GT(ratio, 3.);
   EXPECT_LT(ratio, 5.);
   (void)b;
+}
+
+// Mean length of the output edges whose midpoint satisfies `where`.
+template <typename Where>
+double mean_edge_length(const Mesh& m, const Where& where)
+{
+  double sum = 0.;
+  std::size_t n = 0;
+  for(auto e : m.edges())
+  {
+    const K::Point_3 a = m.point(m.source(m.halfedge(e))), b = m.point(m.target(m.halfedge(e)));
+    if(where(CGAL::midpoint(a, b)))
+    {
+      sum += std::sqrt(CGAL::squared_distance(a, b));
+      ++n;
+    }
+  }
+  return n > 0 ? sum / double(n) : 0.;
+}
+
+TEST(Sizing, AChordErrorBoundShortensTheEdgesOnCurvedParts)
+{
+  // A unit hemisphere on a flat annulus around it, the target length 0.25: a chord error of 0.002
+  // asks for sqrt(8 * 0.002 * 1) = 0.126 on the sphere (a chord's sagitta is L^2 / 8R); the flat
+  // annulus, farther than the gradation reaches, keeps the target. The rim is a sharp feature (90
+  // degrees), which does not count as curvature.
+  Mesh mesh;
+  bm::make_spherical_cap(mesh, 90., 16, 48);
+  std::vector<Mesh::Halfedge_index> rim;
+  for(auto h : mesh.halfedges())
+    if(mesh.is_border(h))
+      rim.push_back(h);
+  Mesh flat;
+  {
+    // The annulus from radius 1 to 4, in the plane z = 0, sharing the hemisphere's rim.
+    std::map<Mesh::Vertex_index, Mesh::Vertex_index> copy;
+    for(auto v : mesh.vertices())
+      copy[v] = flat.add_vertex(mesh.point(v));
+    for(auto f : mesh.faces())
+    {
+      std::vector<Mesh::Vertex_index> corners;
+      for(auto v : mesh.vertices_around_face(mesh.halfedge(f)))
+        corners.push_back(copy[v]);
+      flat.add_face(corners);
+    }
+    for(auto h : rim)
+    {
+      const K::Point_3 a = mesh.point(mesh.source(h)), b = mesh.point(mesh.target(h));
+      const Mesh::Vertex_index a_out = flat.add_vertex(K::Point_3(4. * a.x(), 4. * a.y(), 0.)),
+                               b_out = flat.add_vertex(K::Point_3(4. * b.x(), 4. * b.y(), 0.));
+      // The cap lies right of the border halfedge a -> b, the annulus left of it.
+      flat.add_face(copy[mesh.source(h)], copy[mesh.target(h)], b_out);
+      flat.add_face(copy[mesh.source(h)], b_out, a_out);
+    }
+    CGAL::Polygon_mesh_processing::stitch_borders(flat);
+  }
+  ASSERT_TRUE(CR::check_mesh(flat).is_valid()) << CR::check_mesh(flat).summary();
+
+  Mesh uniform, adaptive;
+  std::vector<CR::Surface_location> locations;
+  CR::remesh_conformal(flat, uniform, CR::parameters::target_edge_length(0.25));
+  CR::remesh_conformal(flat, adaptive,
+                       CR::parameters::maximum_chord_error(0.002, CR::parameters::target_edge_length(0.25)),
+                       &locations);
+  check_topology_and_fidelity(flat, adaptive, locations);
+  const auto on_sphere = [](const K::Point_3& p) { return p.z() > 0.2; };
+  const auto far_out = [](const K::Point_3& p) { return p.x() * p.x() + p.y() * p.y() > 9.; };
+  const double expected = std::sqrt(8. * 0.002);
+  EXPECT_NEAR(mean_edge_length(uniform, on_sphere), 0.25, 0.25 * 0.3);
+  EXPECT_GT(mean_edge_length(adaptive, on_sphere), 0.7 * expected);
+  EXPECT_LT(mean_edge_length(adaptive, on_sphere), 1.3 * expected);
+  EXPECT_NEAR(mean_edge_length(adaptive, far_out), mean_edge_length(uniform, far_out), 0.25 * 0.15);
+  // No bend, no change: a chord error the target length already meets.
+  Mesh loose;
+  CR::remesh_conformal(flat, loose, CR::parameters::maximum_chord_error(1., CR::parameters::target_edge_length(0.25)));
+  EXPECT_EQ(loose.number_of_vertices(), uniform.number_of_vertices());
+}
+
+TEST(Sizing, AUserFieldSetsTheLengthWhereItIsSmaller)
+{
+  Mesh mesh;
+  bm::make_spherical_cap(mesh, 90., 16, 48);
+  Mesh output;
+  std::vector<CR::Surface_location> locations;
+  const auto field = [](const K::Point_3& p) { return p.x() > 0. ? 0.05 : 1.; };
+  CR::remesh_conformal(mesh, output, CR::parameters::sizing_field(field, CR::parameters::target_edge_length(0.15)), &locations);
+  check_topology_and_fidelity(mesh, output, locations);
+  const double fine = mean_edge_length(output, [](const K::Point_3& p) { return p.x() > 0.2; });
+  const double coarse = mean_edge_length(output, [](const K::Point_3& p) { return p.x() < -0.5; });
+  EXPECT_NEAR(fine, 0.05, 0.05 * 0.3);
+  EXPECT_NEAR(coarse, 0.15, 0.15 * 0.3); // the target length bounds the field
+  test_support::expect_error([&] { CR::remesh_conformal(mesh, CR::parameters::maximum_chord_error(-1.)); },
+                             CR::Error_code::INVALID_INPUT, {"chord error"});
 }
 
 TEST(RemeshConformal, PlanarStageWithExactConstructions)

@@ -419,12 +419,52 @@ TEST(ThinPatches, CurvesOfChordsThatCannotGlueAreSampledMoreDensely)
   }
   const auto no_size_bound = [](const CGAL::Epick::Point_2&) { return 100.; };
   const R::Planar_mesh planar = R::mesh_planar_domain<CGAL::Epick>(loops, 20., no_size_bound, 0, false);
-  const auto not_glued = R::chords_not_glued(loops, planar, ids, samples);
+  const auto not_glued = R::check_glue(loops, planar, ids, samples).chords_not_glued;
   for(const std::pair<std::size_t, std::size_t> chord : {std::make_pair(0, 1), std::make_pair(2, 3), std::make_pair(3, 4)})
     EXPECT_NE(std::find(not_glued.begin(), not_glued.end(), chord), not_glued.end()) << chord.first << "-" << chord.second;
 
   // A simple polygon is glued everywhere.
   loops[0][3].uv = CGAL::Epick::Point_2(2., 0.5);
   const R::Planar_mesh simple = R::mesh_planar_domain<CGAL::Epick>(loops, 20., no_size_bound, 0, false);
-  EXPECT_TRUE(R::chords_not_glued(loops, simple, ids, samples).empty());
+  EXPECT_TRUE(R::check_glue(loops, simple, ids, samples).chords_not_glued.empty());
+}
+
+TEST(ThinPatches, DiagonalsBetweenSamplesCanBeSplit)
+{
+  namespace R = CR::internal::remeshing;
+  // A long thin hexagon, no size bound: the triangulation of its samples joins samples across it
+  // (diagonals, which two patches along a short straight curve can share: four triangles on one
+  // edge). Asked to, the mesher splits them, and no edge between two samples is left but the chords.
+  std::vector<std::vector<R::Boundary_sample> > loops(1);
+  const std::vector<std::pair<double, double> > hexagon{{0., 0.}, {3., -0.2}, {6., 0.}, {6., 1.}, {3., 1.2}, {0., 1.}};
+  R::Curve_samples samples;
+  std::vector<std::size_t> ids;
+  for(std::size_t i = 0; i < hexagon.size(); ++i)
+  {
+    loops[0].push_back(R::Boundary_sample{CGAL::Epick::Point_2(hexagon[i].first, hexagon[i].second), CGAL::Epick::Point_3(0., 0., 0.)});
+    ids.push_back(10 + i); // sample indices need not be loop positions
+    samples.curve_of_chord[std::minmax(10 + i, 10 + (i + 1) % hexagon.size())] = 0;
+  }
+  const auto no_size_bound = [](const CGAL::Epick::Point_2&) { return 100.; };
+  const R::Planar_mesh plain = R::mesh_planar_domain<CGAL::Epick>(loops, 0., no_size_bound, 0, false);
+  const R::Glue_check before = R::check_glue(loops, plain, ids, samples);
+  EXPECT_TRUE(before.chords_not_glued.empty());
+  ASSERT_FALSE(before.sample_diagonals.empty());
+
+  std::vector<std::pair<std::size_t, std::size_t> > positions;
+  for(const auto& d : before.sample_diagonals)
+    positions.emplace_back(d.first - 10, d.second - 10);
+  const R::Planar_mesh split = R::mesh_planar_domain<CGAL::Epick>(loops, 0., no_size_bound, 0, false, positions);
+  const R::Glue_check after = R::check_glue(loops, split, ids, samples);
+  EXPECT_TRUE(after.chords_not_glued.empty());
+  EXPECT_TRUE(after.sample_diagonals.empty());
+  EXPECT_GT(split.points.size(), plain.points.size());
+  double area = 0.;
+  for(const auto& t : split.triangles)
+  {
+    const double a = CGAL::area(split.points[t[0]], split.points[t[1]], split.points[t[2]]);
+    EXPECT_GT(a, 0.);
+    area += a;
+  }
+  EXPECT_NEAR(area, 6.0 + 2 * 0.2 * 3., 1e-9); // the domain, covered once
 }

@@ -9,6 +9,7 @@
 
 #include <CGAL/Conformal_remeshing/conformal_flatten.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/planar_mesher.h>
+#include <CGAL/Conformal_remeshing/internal/remeshing/sizing.h>
 #include <CGAL/Conformal_remeshing/segment_into_poly_annuli.h>
 
 #include <cmath>
@@ -41,11 +42,11 @@ struct Curve_samples
 /// inside a patch, along which the patch is slit open) into curves
 /// between junctions (vertices where other than two boundary edges meet, where the pair of
 /// patches changes, or where the curve turns by more than `corner_degrees`), and samples each
-/// curve at spacing close to `spacing`, divided by 2^`halvings[c]` on curve `c` when given (the
-/// curves are numbered in the same order by every call on the same segmentation). A curve that
-/// closes on itself gets at least 3 pieces, and a slit or two curves with the same ends at least
-/// 2 each, so every patch loop has 3 samples or more.
-inline Curve_samples sample_boundary_curves(const Poly_annulus_segmentation& s, double spacing, double corner_degrees,
+/// curve at spacing close to `sizing` (interpolated between the curve's vertices), divided by
+/// 2^`halvings[c]` on curve `c` when given (the curves are numbered in the same order by every
+/// call on the same segmentation). A curve that closes on itself gets at least 3 pieces, and a
+/// slit or two curves with the same ends at least 2 each, so every patch loop has 3 samples or more.
+inline Curve_samples sample_boundary_curves(const Poly_annulus_segmentation& s, const Sizing& sizing, double corner_degrees,
                                             const std::vector<int>& halvings = std::vector<int>())
 {
   typedef Poly_annulus_segmentation::Mesh Mesh;
@@ -125,11 +126,18 @@ inline Curve_samples sample_boundary_curves(const Poly_annulus_segmentation& s, 
   for(std::size_t c = 0; c < curves.size(); ++c)
   {
     const std::vector<Vertex>& curve = curves[c];
-    const double curve_spacing = c < halvings.size() ? std::ldexp(spacing, -halvings[c]) : spacing;
-    std::vector<double> length(curve.size() - 1);
+    // Each edge's length weighted by the target over the local size (trapezoidal rule; exactly
+    // its length where the sizing is uniform).
+    const double curve_spacing = c < halvings.size() ? std::ldexp(sizing.target(), -halvings[c]) : sizing.target();
+    std::vector<double> units(curve.size() - 1);
     double total = 0.;
     for(std::size_t i = 0; i + 1 < curve.size(); ++i)
-      total += length[i] = std::sqrt(CGAL::squared_distance(m.point(curve[i]), m.point(curve[i + 1])));
+    {
+      units[i] = std::sqrt(CGAL::squared_distance(m.point(curve[i]), m.point(curve[i + 1])));
+      if(!sizing.is_uniform())
+        units[i] *= 0.5 * (sizing.target() / sizing.at(curve[i]) + sizing.target() / sizing.at(curve[i + 1]));
+      total += units[i];
+    }
     // A slit (a feature inside a patch, the same patch on both sides) is traversed once per side
     // by the same loop: with one piece, a slit whose ends are both free would be a loop of two
     // samples, a polygon of no area in the plane.
@@ -147,13 +155,13 @@ inline Curve_samples sample_boundary_curves(const Poly_annulus_segmentation& s, 
       previous = next;
     };
     std::size_t e = 0;
-    double before = 0.; // curve length before edge e
+    double before = 0.; // curve units before edge e
     for(std::size_t k = 1; k < pieces; ++k)
     {
       const double at = step * double(k);
-      while(before + length[e] < at && e + 2 < curve.size())
-        before += length[e++];
-      const double t = (std::min)(1., (std::max)(0., (at - before) / length[e]));
+      while(before + units[e] < at && e + 2 < curve.size())
+        before += units[e++];
+      const double t = (std::min)(1., (std::max)(0., (at - before) / units[e]));
       const Epick::Point_3 &a = m.point(curve[e]), &b = m.point(curve[e + 1]);
       const Halfedge h = m.halfedge(curve[e], curve[e + 1]);
       const bool forward = curve[e] < curve[e + 1];
@@ -167,6 +175,13 @@ inline Curve_samples sample_boundary_curves(const Poly_annulus_segmentation& s, 
   for(auto& edge : samples.on_edge)
     std::sort(edge.second.begin(), edge.second.end());
   return samples;
+}
+
+/// Sampling at a uniform `spacing`.
+inline Curve_samples sample_boundary_curves(const Poly_annulus_segmentation& s, double spacing, double corner_degrees,
+                                            const std::vector<int>& halvings = std::vector<int>())
+{
+  return sample_boundary_curves(s, Sizing(s, spacing), corner_degrees, halvings);
 }
 
 /// The samples of one boundary loop of a flattened patch, in loop order, with their planar
@@ -190,7 +205,7 @@ inline std::vector<Boundary_sample> loop_samples(const std::vector<Domain_point>
     const auto at_a = samples.at_vertex.find(a);
     if(at_a != samples.at_vertex.end())
     {
-      result.push_back(Boundary_sample{loop[first].uv, samples.points[at_a->second]});
+      result.push_back(Boundary_sample{loop[first].uv, samples.points[at_a->second], at_a->second});
       ids.push_back(at_a->second);
     }
     const auto inside = samples.on_edge.find(std::minmax(a, b));
@@ -218,7 +233,7 @@ inline std::vector<Boundary_sample> loop_samples(const std::vector<Domain_point>
       const double t = span > 0. ? (std::min)(1., (std::max)(0., (at - along[piece]) / span)) : 0.;
       const Epick::Point_2 &p = loop[path[piece]].uv, &q = loop[path[piece + 1]].uv;
       result.push_back(Boundary_sample{Epick::Point_2(p.x() + t * (q.x() - p.x()), p.y() + t * (q.y() - p.y())),
-                                       samples.points[sample.second]});
+                                       samples.points[sample.second], sample.second});
       ids.push_back(sample.second);
     }
   }

@@ -21,6 +21,7 @@
 #include <cmath>
 #include <list>
 #include <map>
+#include <set>
 #include <vector>
 
 namespace CGAL {
@@ -33,6 +34,10 @@ struct Boundary_sample
 {
   Epick::Point_2 uv;
   Epick::Point_3 point;
+  /// the surface sample this is an image of: the two sides of a slit have two images of one
+  /// sample, which no vertex may join both (see `mesh_planar_domain()`); `none`: its own point
+  std::size_t id = none;
+  static constexpr std::size_t none = std::size_t(-1);
 };
 
 /// Resamples a closed boundary loop along its 3D polyline with spacing close to `spacing`,
@@ -235,6 +240,56 @@ void mark_domain(CDT& cdt)
   }
 }
 
+// See `mesh_planar_domain()`. Bounded: splitting an edge at a slit's tip moves the problem away
+// from the tip, and a few rounds clear it; the refinement is not run again (shapes near a slit's
+// tip may fall below the angle bound).
+template <typename CDT, typename Vertex_at>
+void separate_images_of_one_sample(CDT& cdt, const std::vector<std::vector<Boundary_sample> >& loops, const Vertex_at& vertex_at)
+{
+  typedef typename CDT::Vertex_handle Vertex_handle;
+  std::map<Vertex_handle, std::size_t> id_of;
+  std::map<std::size_t, int> images;
+  for(const auto& loop : loops)
+    for(const Boundary_sample& s : loop)
+      if(s.id != Boundary_sample::none)
+        ++images[s.id];
+  for(const auto& loop : loops)
+    for(const Boundary_sample& s : loop)
+      if(s.id != Boundary_sample::none && images[s.id] > 1)
+      {
+        const Vertex_handle v = vertex_at(cdt, typename CDT::Point(s.uv.x(), s.uv.y()));
+        if(v != Vertex_handle())
+          id_of[v] = s.id;
+      }
+  if(id_of.empty())
+    return;
+  for(int round = 0; round < 8; ++round)
+  {
+    std::vector<typename CDT::Point> midpoints;
+    for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+    {
+      if(cdt.are_there_incident_constraints(v))
+        continue; // a sample: two samples are kept apart by `diagonals_to_split`
+      std::set<std::size_t> seen;
+      auto w = cdt.incident_vertices(v), done = w;
+      do
+      {
+        const Vertex_handle neighbour = w;
+        const auto image = id_of.find(neighbour);
+        if(image != id_of.end() && !seen.insert(image->second).second)
+        {
+          midpoints.push_back(CGAL::midpoint(v->point(), w->point()));
+          break;
+        }
+      }
+      while(++w != done);
+    }
+    if(midpoints.empty())
+      return;
+    cdt.insert(midpoints.begin(), midpoints.end());
+  }
+}
+
 /// Meshes the domain bounded by `loops` (outer loop first) with CGAL's constrained Delaunay
 /// refinement over `Kernel`: a minimum angle of `min_angle_degrees` (up to the refinement's
 /// guarantees near small input angles) and a longest edge below `size(p)` at each triangle's
@@ -242,10 +297,16 @@ void mark_domain(CDT& cdt)
 /// each moves to the mean of its neighbours when its star stays positively oriented, the points
 /// are triangulated again with the same constraints and refined again, so the bounds still hold.
 /// With `split_boundary == false` no point is added on the loops (their samples are shared with
-/// a neighbouring patch; see `Fixed_boundary_mesher_2`).
+/// a neighbouring patch; see `Fixed_boundary_mesher_2`). No edge joins the samples of a pair in
+/// `diagonals_to_split` (positions in the loops, taken one after the other) unless it is a loop
+/// chord: where the triangulation of the samples has one, its midpoint is inserted first, and as
+/// refinement only adds edges at new points, it never comes back. Last, a vertex joined to two
+/// images of one sample (`Boundary_sample::id`: the sides of a slit, near its tip) would join
+/// one surface point twice: the edge to one of them is split at its midpoint, until none is left.
 template <typename Kernel, typename Size_field>
 Planar_mesh mesh_planar_domain(const std::vector<std::vector<Boundary_sample> >& loops, double min_angle_degrees,
-                               const Size_field& size, int smoothing_iterations, bool split_boundary = true)
+                               const Size_field& size, int smoothing_iterations, bool split_boundary = true,
+                               const std::vector<std::pair<std::size_t, std::size_t> >& diagonals_to_split = {})
 {
   typedef CGAL::Delaunay_mesh_vertex_base_2<Kernel> Vb;
   typedef CGAL::Delaunay_mesh_face_base_2<Kernel> Fb;
@@ -257,8 +318,36 @@ Planar_mesh mesh_planar_domain(const std::vector<std::vector<Boundary_sample> >&
   typedef Size_field_criteria_2<CDT, Size_field> Criteria;
   const double sine = std::sin(min_angle_degrees * CGAL_PI / 180.);
 
+  std::vector<Point> sample_points;
+  for(const auto& loop : loops)
+    for(const Boundary_sample& s : loop)
+      sample_points.push_back(Point(s.uv.x(), s.uv.y()));
+  auto vertex_at = [](const CDT& cdt, const Point& p) {
+    typename CDT::Locate_type type;
+    int i = 0;
+    const Face_handle f = cdt.locate(p, type, i);
+    return type == CDT::VERTEX ? f->vertex(i) : Vertex_handle();
+  };
+  // The midpoint of an edge lies inside the circumcircle of both its triangles: the edge goes.
+  auto split_diagonals = [&](CDT& cdt) {
+    std::vector<Point> midpoints;
+    for(const auto& pair : diagonals_to_split)
+    {
+      const Vertex_handle a = vertex_at(cdt, sample_points.at(pair.first)), b = vertex_at(cdt, sample_points.at(pair.second));
+      Face_handle f;
+      int i = 0;
+      if(a != Vertex_handle() && b != Vertex_handle() && cdt.is_edge(a, b, f, i) && !cdt.is_constrained(std::make_pair(f, i))
+         && f->is_in_domain())
+        midpoints.push_back(CGAL::midpoint(a->point(), b->point()));
+    }
+    cdt.insert(midpoints.begin(), midpoints.end());
+    return !midpoints.empty();
+  };
+
   auto refine = [&](CDT& cdt) {
     mark_domain(cdt);
+    if(split_diagonals(cdt))
+      mark_domain(cdt);
     if(split_boundary)
     {
       CGAL::Delaunay_mesher_2<CDT, Criteria> mesher(cdt, Criteria(sine * sine, size));
@@ -330,18 +419,19 @@ Planar_mesh mesh_planar_domain(const std::vector<std::vector<Boundary_sample> >&
     cdt.swap(smoothed);
   }
 
+  separate_images_of_one_sample(cdt, loops, vertex_at);
+  mark_domain(cdt);
+
   // Output: the boundary samples first, in loop order, then the other vertices.
   Planar_mesh result;
   std::map<Vertex_handle, int> index;
   for(const auto& loop : loops)
     for(const Boundary_sample& s : loop)
     {
-      typename CDT::Locate_type type;
-      int i = 0;
-      const Face_handle f = cdt.locate(Point(s.uv.x(), s.uv.y()), type, i);
-      if(type != CDT::VERTEX)
+      const Vertex_handle v = vertex_at(cdt, Point(s.uv.x(), s.uv.y()));
+      if(v == Vertex_handle())
         throw Error(Error_code::INVALID_INPUT, "planar meshing lost a boundary sample (internal error)");
-      if(index.emplace(f->vertex(i), int(result.points.size())).second)
+      if(index.emplace(v, int(result.points.size())).second)
         result.points.push_back(s.uv);
     }
   result.number_of_samples = result.points.size();

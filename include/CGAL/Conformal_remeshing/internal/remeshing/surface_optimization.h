@@ -17,6 +17,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <algorithm>
+#include <set>
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -94,9 +95,14 @@ public:
 
   /// Builds the adjacency and the target valences; false if an edge has more than two triangles
   /// or two triangles with the same orientation. Vertices on a boundary edge and the first
-  /// `number_of_fixed_points` points never move.
-  bool initialize(std::size_t number_of_fixed_points)
+  /// `number_of_fixed_points` points never move. The first points are images of the surface
+  /// samples `sample_ids` when given: no flip then joins two images of one sample, the samples
+  /// of a pair in `forbidden_diagonals` (smaller first), or a vertex to two images of one sample.
+  bool initialize(std::size_t number_of_fixed_points, const std::vector<std::size_t>& sample_ids = {},
+                  const std::set<std::pair<std::size_t, std::size_t> >& forbidden_diagonals = {})
   {
+    sample_ids_ = sample_ids;
+    forbidden_diagonals_ = forbidden_diagonals;
     const std::size_t nt = triangles_.size(), nv = points_.size();
     neighbor_.assign(nt, {{-1, -1, -1}});
     // Sort the half-edges by their undirected edge: twins become adjacent.
@@ -187,7 +193,7 @@ public:
            || CGAL::orientation(points_[c], points_[d], points_[b]) != CGAL::POSITIVE)
           continue;
         if(CGAL::squared_distance(pc, pd) > (std::max)(longest_squared_, CGAL::squared_distance(pa, pb))
-           || !keeps_angle_bound(pa, pb, pc, pd))
+           || !keeps_angle_bound(pa, pb, pc, pd) || joins_a_surface_point_twice(c, d))
           continue;
         flip(t, k, u, j);
         ++flips;
@@ -325,6 +331,27 @@ private:
     return true;
   }
 
+  // Whether a new edge c-d would join two samples of a forbidden diagonal (another patch has it)
+  // or two images of one sample, or a vertex to a second image of one sample (the sides of a
+  // slit): the glue needs none of them.
+  bool joins_a_surface_point_twice(int c, int d) const
+  {
+    const auto is_sample = [&](int v) { return std::size_t(v) < sample_ids_.size(); };
+    if(!is_sample(c) && !is_sample(d))
+      return false;
+    if(is_sample(c) && is_sample(d))
+    {
+      const std::size_t a = sample_ids_[std::size_t(c)], b = sample_ids_[std::size_t(d)];
+      return a == b || forbidden_diagonals_.count(std::minmax(a, b)) > 0;
+    }
+    const int inner = is_sample(c) ? d : c, sample = is_sample(c) ? c : d;
+    std::vector<int> ring;
+    if(!interior_ring(inner, ring))
+      return true;
+    return std::any_of(ring.begin(), ring.end(),
+                       [&](int r) { return is_sample(r) && sample_ids_[std::size_t(r)] == sample_ids_[std::size_t(sample)]; });
+  }
+
   // The neighbours of an interior vertex, counterclockwise; false for a vertex on the boundary.
   bool interior_ring(int v, std::vector<int>& ring) const
   {
@@ -383,6 +410,8 @@ private:
   std::vector<std::array<int, 3> > neighbor_;
   std::vector<int> incident_, valence_, target_;
   std::vector<char> fixed_;
+  std::vector<std::size_t> sample_ids_;
+  std::set<std::pair<std::size_t, std::size_t> > forbidden_diagonals_;
 };
 
 /// Optimizes a patch's remeshing: `rounds` rounds of valence-driven edge flips and smoothing
@@ -397,13 +426,15 @@ private:
 template <typename Lift>
 Surface_optimization_report optimize_on_surface(std::vector<Epick::Point_2>& points, std::vector<Epick::Point_3>& positions,
                                                 std::vector<std::array<int, 3> >& triangles, std::size_t number_of_fixed_points,
-                                                const Lift& lift, double angle_bound_degrees, double longest_edge, int rounds)
+                                                const Lift& lift, double angle_bound_degrees, double longest_edge, int rounds,
+                                                const std::vector<std::size_t>& sample_ids = {},
+                                                const std::set<std::pair<std::size_t, std::size_t> >& forbidden_diagonals = {})
 {
   Surface_optimization_report report;
   if(rounds <= 0 || triangles.empty())
     return report;
   Surface_mesh_optimizer<Lift> optimizer(points, positions, triangles, lift, angle_bound_degrees, longest_edge);
-  if(!optimizer.initialize(number_of_fixed_points))
+  if(!optimizer.initialize(number_of_fixed_points, sample_ids, forbidden_diagonals))
     return report;
   report.optimized = true;
   // Each round: valence flips, then flips that improve shapes without hurting valences, then two
