@@ -58,6 +58,8 @@ bin="$build/benchmark/Conformal_remeshing"
 
 # --- the runs -----------------------------------------------------------------------------------
 mkdir -p "$out/runs" "$cache"
+# Cached models are named after the generators' sources too: a changed generator makes new ones.
+generator_key=$(cat "$root"/benchmark/Conformal_remeshing/generators/*.h | sha1sum | cut -c1-10)
 plan_args=(--scale "$scale" --part "$part")
 [ -z "$models" ] || plan_args+=(--models "$models")
 plan="$("$bin/paper_benchmark" plan "${plan_args[@]}")"
@@ -72,7 +74,7 @@ while read -r id model vertices method output_vertices cut; do
     echo "[$index/$total] $id: recorded already (--resume)"
     continue
   fi
-  mesh="$cache/${model}_${vertices}.off"
+  mesh="$cache/${model}_${vertices}_${generator_key}.off"
   if [ ! -s "$mesh" ]; then
     echo "[$index/$total] generating $model with $vertices vertices"
     "$bin/generate_paper_model" "$model" "$vertices" "$mesh" --seed 1 \

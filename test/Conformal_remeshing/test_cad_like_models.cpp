@@ -257,8 +257,9 @@ void expect_valid_paper_model(bm::Paper_model model)
   const double expected = model == bm::Paper_model::brake_disc_upper_half || model == bm::Paper_model::brake_disc_lower_half
                             ? 10000. * 2. / 3. : 10000.;
   EXPECT_NEAR(double(mesh.number_of_vertices()), expected, 0.03 * expected);
-  // Even this coarse, more than half of the triangles are slivers, as in CAD exports.
-  EXPECT_GT(bm::cad_model_statistics(mesh).share_min_angle_below_10, 0.5);
+  // Even this coarse, nearly half of the triangles or more are slivers, as in CAD exports (fewer
+  // on the curved sheets, whose faces have interior points).
+  EXPECT_GT(bm::cad_model_statistics(mesh).share_min_angle_below_10, 0.45);
 }
 
 TEST(PaperModels, SuspensionArm) { expect_valid_paper_model(bm::Paper_model::suspension_arm); }
@@ -378,3 +379,29 @@ TEST(CadLikeModels, ShippedDefaultModelMatchesGenerator)
 }
 
 } // namespace
+
+TEST(PaperModels, CurvedFacesStayCloseToTheirSurface)
+{
+  // The shield's levels are placed on z = height - f(x, y), f = (x^2 + y^2) / 840 - 0.15 y. An
+  // edge within one level deviates from that surface by the sag of f along it; a fan of slivers
+  // across the dome sagged up to 9 mm, crumpling the face. Exporters bound it: 0.1 mm between
+  // grid points 18 mm apart, a little more on longer Delaunay edges near the outline.
+  bm::Paper_model_parameters p;
+  p.target_vertices = 13400;
+  Mesh mesh;
+  bm::make_paper_model(mesh, bm::Paper_model::shield, p);
+  const auto f = [](double x, double y) { return (x * x + y * y) / 840. - 0.15 * y; };
+  const auto height = [&](const Mesh::Point& q) { return q.z() + f(q.x(), q.y()); };
+  double worst_sag = 0.;
+  std::size_t within_levels = 0;
+  for(auto e : mesh.edges())
+  {
+    const Mesh::Point a = mesh.point(mesh.source(mesh.halfedge(e))), b = mesh.point(mesh.target(mesh.halfedge(e)));
+    if(std::abs(height(a) - height(b)) > 1e-9)
+      continue; // a strip edge between two levels
+    ++within_levels;
+    worst_sag = (std::max)(worst_sag, std::abs(0.5 * (f(a.x(), a.y()) + f(b.x(), b.y())) - f(0.5 * (a.x() + b.x()), 0.5 * (a.y() + b.y()))));
+  }
+  EXPECT_GT(within_levels, mesh.number_of_edges() / 2);
+  EXPECT_LT(worst_sag, 0.3);
+}

@@ -9,10 +9,12 @@
 #define CGAL_CONFORMAL_REMESHING_BENCHMARKS_CAD_LIKE_MODELS_H
 
 #include <CGAL/Conformal_remeshing/check_mesh.h>
+#include <CGAL/Conformal_remeshing/internal/remeshing/planar_mesher.h>
 #include <CGAL/Conformal_remeshing/mesh_quality.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Kernel_traits.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
@@ -640,6 +642,59 @@ void add_fan_face(CGAL::Surface_mesh<Point_3>& mesh, const Plate_outline& outlin
   }
 }
 
+// Triangulates a curved face as CAD exporters do (they fan only planar faces; a curved face gets
+// interior points so that its chord error stays bounded): the outline's points and the points of
+// a square grid of step `spacing` inside it, by a constrained Delaunay triangulation. Appends the
+// grid points to `interior` and returns counterclockwise triangles indexing `outline.points`,
+// then `interior`.
+inline std::vector<std::array<std::size_t, 3> > grid_face_triangles(const Plate_outline& outline, double spacing,
+                                                                     std::vector<Planar_point>& interior)
+{
+  typedef CGAL::Triangulation_vertex_base_with_info_2<std::size_t, Planar_kernel> Vb;
+  typedef CGAL::Delaunay_mesh_face_base_2<Planar_kernel> Fb;
+  typedef CGAL::Constrained_Delaunay_triangulation_2<Planar_kernel, CGAL::Triangulation_data_structure_2<Vb, Fb>,
+                                                     CGAL::Exact_predicates_tag> CDT;
+  CDT cdt;
+  std::vector<CDT::Vertex_handle> handle;
+  for(std::size_t i = 0; i < outline.points.size(); ++i) {
+    handle.push_back(cdt.insert(outline.points[i]));
+    handle.back()->info() = i;
+  }
+  auto constrain = [&](const std::vector<std::size_t>& loop) {
+    for(std::size_t i = 0; i < loop.size(); ++i)
+      cdt.insert_constraint(handle[loop[i]], handle[loop[(i + 1) % loop.size()]]);
+  };
+  constrain(outline.outer);
+  for(const std::vector<std::size_t>& loop : outline.hole_loops)
+    constrain(loop);
+  CGAL::Conformal_remeshing::internal::remeshing::mark_domain(cdt);
+
+  double x0 = std::numeric_limits<double>::infinity(), y0 = x0, x1 = -x0, y1 = -x0;
+  for(const Planar_point& q : outline.points) {
+    x0 = (std::min)(x0, q.x()), y0 = (std::min)(y0, q.y()), x1 = (std::max)(x1, q.x()), y1 = (std::max)(y1, q.y());
+  }
+  std::vector<Planar_point> grid;
+  for(double y = y0 + 0.5 * spacing; y < y1; y += spacing)
+    for(double x = x0 + 0.5 * spacing; x < x1; x += spacing) {
+      CDT::Locate_type type;
+      int i = 0;
+      const CDT::Face_handle f = cdt.locate(Planar_point(x, y), type, i);
+      if(type == CDT::FACE && f->is_in_domain())
+        grid.emplace_back(x, y);
+    }
+  for(const Planar_point& q : grid) {
+    const CDT::Vertex_handle v = cdt.insert(q);
+    v->info() = outline.points.size() + interior.size();
+    interior.push_back(q);
+  }
+  CGAL::Conformal_remeshing::internal::remeshing::mark_domain(cdt);
+  std::vector<std::array<std::size_t, 3> > triangles;
+  for(CDT::Face_handle f : cdt.finite_face_handles())
+    if(f->is_in_domain())
+      triangles.push_back({{f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()}});
+  return triangles;
+}
+
 // One quad, two triangles, of a strip joining two copies of a boundary edge i -> j (material on
 // its left): it faces away from the material when the `upper` copy is on the side of the face
 // that the edge bounds counterclockwise.
@@ -674,7 +729,9 @@ void add_strip(CGAL::Surface_mesh<Point_3>& mesh, const std::vector<std::size_t>
 /// outline moved into the material for fillets) at height `heights[k]`, placed in space by
 /// `place(x, y, height)`. Each loop's copies in consecutive levels are joined by strips (walls,
 /// fillets); the first level is closed by a face triangulated in fans when `cap_first`, the
-/// last one, seen from below, when `cap_last`. With both caps and `place` the identity, the
+/// last one, seen from below, when `cap_last`; with `curved_cap_spacing > 0` (for a `place`
+/// that bends the caps) by a Delaunay triangulation with interior grid points at that spacing
+/// instead, as exporters tessellate curved faces. With both caps and `place` the identity, the
 /// part is closed and outward oriented, of genus the number of holes; with one cap, an open
 /// surface of genus 0 with one boundary loop per loop of the outline.
 ///
@@ -682,7 +739,8 @@ void add_strip(CGAL::Surface_mesh<Point_3>& mesh, const std::vector<std::size_t>
 /// loop by loop, band by band. Throws `std::runtime_error` if a triangulation fails.
 template <class Point_3, class Place>
 void add_layered_part(CGAL::Surface_mesh<Point_3>& mesh, const std::vector<Plate_outline>& levels,
-                      const std::vector<double>& heights, bool cap_first, bool cap_last, Place place)
+                      const std::vector<double>& heights, bool cap_first, bool cap_last, Place place,
+                      double curved_cap_spacing = 0.)
 {
   typedef typename CGAL::Surface_mesh<Point_3>::Vertex_index Vertex_index;
   if(levels.empty() || levels.size() != heights.size())
@@ -696,11 +754,29 @@ void add_layered_part(CGAL::Surface_mesh<Point_3>& mesh, const std::vector<Plate
     for(const internal::Planar_point& q : levels[k].points)
       vertex[k].push_back(mesh.add_vertex(place(q.x(), q.y(), heights[k])));
 
-  // CAD exporters triangulate each face on its own: the last one starts its fans elsewhere.
+  // CAD exporters triangulate each face on its own: the last one starts its fans elsewhere. A
+  // curved face (`place` bends it) gets grid points inside instead of fans.
+  auto add_cap = [&](std::size_t k, std::size_t fan_start, bool reversed) {
+    if(!(curved_cap_spacing > 0.)) {
+      internal::add_fan_face(mesh, levels[k], vertex[k], fan_start, reversed);
+      return;
+    }
+    std::vector<internal::Planar_point> interior;
+    const auto triangles = internal::grid_face_triangles(levels[k], curved_cap_spacing, interior);
+    std::vector<Vertex_index> corner = vertex[k];
+    for(const internal::Planar_point& q : interior)
+      corner.push_back(mesh.add_vertex(place(q.x(), q.y(), heights[k])));
+    for(const std::array<std::size_t, 3>& t : triangles) {
+      if(reversed)
+        internal::add_triangle(mesh, corner[t[2]], corner[t[1]], corner[t[0]]);
+      else
+        internal::add_triangle(mesh, corner[t[0]], corner[t[1]], corner[t[2]]);
+    }
+  };
   if(cap_first)
-    internal::add_fan_face(mesh, levels.front(), vertex.front(), 0, false);
+    add_cap(0, 0, false);
   if(cap_last)
-    internal::add_fan_face(mesh, levels.back(), vertex.back(), levels.back().points.size() / 2, true);
+    add_cap(levels.size() - 1, levels.back().points.size() / 2, true);
 
   const Plate_outline& outline = levels[0];
   auto add_walls = [&](const std::vector<std::size_t>& loop) {

@@ -136,22 +136,24 @@ public:
   const std::vector<Corner>& corners() const { return corners_; }
 
   /// Number of samples with `segments_per_turn` segments per full turn of the arcs.
-  std::size_t size(int segments_per_turn) const
+  /// With `max_straight > 0`, straight parts are split into pieces no longer than that.
+  std::size_t size(int segments_per_turn, double max_straight = 0.) const
   {
     if(corners_.size() == 1)
       return std::size_t(segments_per_turn);
     std::size_t count = 0;
     for(std::size_t i = 0; i < corners_.size(); ++i)
-      count += corners_[i].radius == 0. ? 1 : arc_segments(i, segments_per_turn) + 1;
+      count += (corners_[i].radius == 0. ? 1 : arc_segments(i, segments_per_turn) + 1) + straight_segments(i, max_straight) - 1;
     return count;
   }
 
   /// Appends the samples of the loop moved outward by `offset` to `points`, counterclockwise:
-  /// each arc from its first to its last tangent point (straight parts are single segments),
-  /// a circle from angle 0. `first` (optional) receives each corner's first sample's index.
-  /// Throws `std::invalid_argument` if the offset would flip an arc or move a sharp corner.
+  /// each arc from its first to its last tangent point, a circle from angle 0; straight parts
+  /// are single segments, or pieces no longer than `max_straight` when it is positive (for a
+  /// loop placed on a curved surface). `first` (optional) receives each corner's first sample's
+  /// index. Throws `std::invalid_argument` if the offset would flip an arc or move a sharp corner.
   void sample(double offset, int segments_per_turn, std::vector<internal::Planar_point>& points,
-              std::vector<std::size_t>* first = nullptr) const
+              std::vector<std::size_t>* first = nullptr, double max_straight = 0.) const
   {
     if(segments_per_turn < 3)
       throw std::invalid_argument("rounded loop: at least 3 segments per turn");
@@ -163,6 +165,7 @@ public:
         if(offset != 0.)
           throw std::invalid_argument("rounded loop: cannot offset a sharp corner");
         points.push_back(internal::Planar_point(c.x, c.y));
+        add_straight_points(i, offset, max_straight, points);
         continue;
       }
       const double r = c.radius + offset;
@@ -185,6 +188,7 @@ public:
         const double uy = k == 0 ? in[1] : k == segments ? out[1] : std::sin(angle);
         points.push_back(internal::Planar_point(c.x + r * ux, c.y + r * uy));
       }
+      add_straight_points(i, offset, max_straight, points);
     }
   }
 
@@ -192,6 +196,35 @@ private:
   std::vector<Corner> corners_;
   std::vector<std::array<double, 2> > normal_; // of the tangent segment leaving corner i
   std::vector<double> turn_;                   // signed turn of corner i
+
+  // The tangent segment leaving corner i, moved outward by `offset`: its ends.
+  std::array<double, 4> straight_part(std::size_t i, double offset) const
+  {
+    const Corner &a = corners_[i], &b = corners_[(i + 1) % corners_.size()];
+    const std::array<double, 2>& n = normal_[i];
+    const double ra = a.radius == 0. ? 0. : a.radius + offset, rb = b.radius == 0. ? 0. : b.radius + offset;
+    return {{a.x + ra * n[0], a.y + ra * n[1], b.x + rb * n[0], b.y + rb * n[1]}};
+  }
+
+  // Pieces of the straight part leaving corner i (its length does not depend on the offset).
+  std::size_t straight_segments(std::size_t i, double max_straight) const
+  {
+    if(!(max_straight > 0.) || corners_.size() == 1)
+      return 1;
+    const std::array<double, 4> e = straight_part(i, 0.);
+    return std::max<std::size_t>(1, std::size_t(std::ceil(std::hypot(e[2] - e[0], e[3] - e[1]) / max_straight - 1e-9)));
+  }
+
+  // The points inside the straight part leaving corner i.
+  void add_straight_points(std::size_t i, double offset, double max_straight, std::vector<internal::Planar_point>& points) const
+  {
+    const std::size_t pieces = straight_segments(i, max_straight);
+    const std::array<double, 4> e = straight_part(i, offset);
+    for(std::size_t k = 1; k < pieces; ++k) {
+      const double t = double(k) / double(pieces);
+      points.push_back(internal::Planar_point(e[0] + t * (e[2] - e[0]), e[1] + t * (e[3] - e[1])));
+    }
+  }
 
   // Segments of arc i: angular tolerance, as CAD exporters use.
   std::size_t arc_segments(std::size_t i, int segments_per_turn) const
@@ -204,15 +237,15 @@ private:
 /// counterclockwise around what they bound), each moved by `inset` into the material (a level
 /// of a fillet or of a collar) and sampled with `segments_per_turn` segments per full turn.
 inline Plate_outline rounded_outline(const Rounded_loop& outer, const std::vector<Rounded_loop>& holes,
-                                     double inset, int segments_per_turn)
+                                     double inset, int segments_per_turn, double max_straight = 0.)
 {
   Plate_outline outline;
-  outer.sample(-inset, segments_per_turn, outline.points);
+  outer.sample(-inset, segments_per_turn, outline.points, nullptr, max_straight);
   for(std::size_t i = 0; i < outline.points.size(); ++i)
     outline.outer.push_back(i);
   for(const Rounded_loop& hole : holes) {
     const std::size_t first = outline.points.size();
-    hole.sample(inset, segments_per_turn, outline.points);
+    hole.sample(inset, segments_per_turn, outline.points, nullptr, max_straight);
     std::vector<std::size_t> loop; // clockwise: material on the left
     for(std::size_t i = outline.points.size(); i > first; --i)
       loop.push_back(i - 1);
@@ -318,6 +351,10 @@ int segments_for_target(std::size_t target, Count count)
   return target - count(low) <= count(high) - target ? low : high;
 }
 
+// The grid spacing of a curved face of radius of curvature `radius` (mm) whose chords deviate
+// from it by at most 0.1 mm, a common exporter tolerance: a chord of length L sags L^2 / 8R.
+inline double cad_curved_face_spacing(double radius) { return std::sqrt(8. * radius * 0.1); }
+
 // Insets and heights, top to bottom, of a fillet of radius `radius` between a face at height
 // `top` and a wall below it (inset 0), with `rings` intermediate rings; a quarter circle.
 inline void add_fillet_levels(double top, double radius, int rings, std::vector<double>& insets, std::vector<double>& heights)
@@ -336,13 +373,28 @@ struct Layered_design
   Rounded_loop outer;
   std::vector<Rounded_loop> holes;
   std::vector<double> insets, heights;
+  /// > 0 when the part is placed on a curved surface: the first (top) level's face then gets
+  /// grid points at this spacing (see add_layered_part()), and no straight part of the outline
+  /// is longer
+  double curved_cap_spacing = 0.;
 
   std::size_t vertices(int segments_per_turn) const
   {
-    std::size_t per_level = outer.size(segments_per_turn);
+    std::size_t per_level = outer.size(segments_per_turn, curved_cap_spacing);
     for(const Rounded_loop& hole : holes)
-      per_level += hole.size(segments_per_turn);
+      per_level += hole.size(segments_per_turn, curved_cap_spacing);
     return per_level * insets.size();
+  }
+
+  // The grid points of the curved top face, counted once on a coarse outline: they do not
+  // depend on the outline's resolution but near its border.
+  std::size_t curved_cap_points() const
+  {
+    if(!(curved_cap_spacing > 0.))
+      return 0;
+    std::vector<internal::Planar_point> interior;
+    grid_face_triangles(rounded_outline(outer, holes, insets.front(), 64, curved_cap_spacing), curved_cap_spacing, interior);
+    return interior.size();
   }
 
   // Levels `first` to `last` (inclusive), at the size closest to `target_vertices` of the
@@ -351,15 +403,16 @@ struct Layered_design
   void build(CGAL::Surface_mesh<Point_3>& mesh, std::size_t target_vertices, std::size_t first, std::size_t last,
              bool cap_first, bool cap_last, Place place) const
   {
-    const int segments = segments_for_target(target_vertices, [&](int s) { return vertices(s); });
+    const std::size_t grid = curved_cap_points();
+    const int segments = segments_for_target(target_vertices, [&](int s) { return vertices(s) + grid; });
     std::vector<Plate_outline> levels;
     std::vector<double> z;
     for(std::size_t k = first; k <= last; ++k) {
-      levels.push_back(rounded_outline(outer, holes, insets[k], segments));
+      levels.push_back(rounded_outline(outer, holes, insets[k], segments, curved_cap_spacing));
       z.push_back(heights[k]);
     }
     mesh.clear();
-    add_layered_part(mesh, levels, z, cap_first, cap_last, place);
+    add_layered_part(mesh, levels, z, cap_first, cap_last, place, curved_cap_spacing);
   }
 
   template <class Point_3>
@@ -638,12 +691,14 @@ void make_brake_disc_half(CGAL::Surface_mesh<Point_3>& mesh, const Paper_model_p
 /// C of 270 degrees around the wheel (radii 170 to 300 mm) with a scalloped outer edge and a
 /// faceted inner edge, so strongly concave; 9 mounting holes and 6 clip slots; every boundary
 /// ends in a collar bent down (strips of two bands). The face is a dome, a height field over
-/// its fan triangulation, so the sheet cannot intersect itself. Open, genus 0, 16 boundary
+/// its triangulation, so the sheet cannot intersect itself; being curved, the face is not fanned
+/// but has interior points every 18 mm (chords within 0.1 mm of the dome). Open, genus 0, 16 boundary
 /// loops. `mesh` is cleared first.
 template <class Point_3>
 void make_shield(CGAL::Surface_mesh<Point_3>& mesh, const Paper_model_parameters& p)
 {
-  const internal::Layered_design d = internal::shield_design(p.seed);
+  internal::Layered_design d = internal::shield_design(p.seed);
+  d.curved_cap_spacing = internal::cad_curved_face_spacing(420.); // z'' = 2 / 840
   d.build(mesh, p.target_vertices, 0, d.insets.size() - 1, true, false, [](double x, double y, double z) {
     return Point_3(x, y, z - (x * x + y * y) / 840. + 0.15 * y);
   });
@@ -652,12 +707,14 @@ void make_shield(CGAL::Surface_mesh<Point_3>& mesh, const Paper_model_parameters
 /// A radiator shell (the paper's Fig. 8, 263k vertices): an open 1000 x 560 mm sheet, bent
 /// around the y axis, with a grid of 8 x 14 long louvre slots of random lengths and 14 mounting
 /// holes, every boundary drawn down by a 3 mm collar at 45 degrees (a strip of one band). A
-/// height field over its fan triangulation, so the sheet cannot intersect itself. Open, genus 0,
+/// height field over its triangulation, so the sheet cannot intersect itself; being curved, the
+/// face has interior points every 27 mm (chords within 0.1 mm). Open, genus 0,
 /// 127 boundary loops. `mesh` is cleared first.
 template <class Point_3>
 void make_radiator_shell(CGAL::Surface_mesh<Point_3>& mesh, const Paper_model_parameters& p)
 {
-  const internal::Layered_design d = internal::radiator_shell_design(p.seed);
+  internal::Layered_design d = internal::radiator_shell_design(p.seed);
+  d.curved_cap_spacing = internal::cad_curved_face_spacing(900.); // z'' = 2 / 1800 along x
   d.build(mesh, p.target_vertices, 0, d.insets.size() - 1, true, false, [](double x, double y, double z) {
     return Point_3(x, y, z + x * x / 1800. + y * y / 8000.);
   });
