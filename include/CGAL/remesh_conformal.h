@@ -588,6 +588,8 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
                     + " faces cannot be flattened after 8 bisections: " + failures[to_bisect.front()]);
     for(std::size_t p : to_bisect)
     {
+      // Said, because the attempt can be most of the time on a large part (issue #7's shield).
+      progress("bisecting a patch of " + std::to_string(patch_faces[p].size()) + " faces: " + failures[p]);
       ++report.patch_bisections;
       if(!bisect_patch(segmentation, segmentation.faces_of_patch(p), 2, 0.1 * h))
         throw Error(Error_code::NOT_CONVERGED, "remesh_conformal: a patch cannot be flattened (" + failures[p]
