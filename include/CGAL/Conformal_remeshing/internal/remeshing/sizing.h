@@ -11,6 +11,7 @@
 #include <CGAL/Conformal_remeshing/segment_into_poly_annuli.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <map>
@@ -22,6 +23,18 @@ namespace CGAL {
 namespace Conformal_remeshing {
 namespace internal {
 namespace remeshing {
+
+// Barycentric coordinates of `p` (on the triangle's plane) in the triangle `t`.
+inline std::array<double, 3> barycentric(const Epick::Point_3& p, const std::array<Epick::Point_3, 3>& t)
+{
+  const Epick::Vector_3 u = t[1] - t[0], v = t[2] - t[0], w = p - t[0];
+  const double uu = u * u, uv = u * v, vv = v * v, wu = w * u, wv = w * v;
+  const double d = uu * vv - uv * uv;
+  if(!(d > 0.))
+    return {{1., 0., 0.}};
+  const double b1 = (vv * wu - uv * wv) / d, b2 = (uu * wv - uv * wu) / d;
+  return {{1. - b1 - b2, b1, b2}};
+}
 
 /// The size at a surface point: the smallest of the uniform target, the user's field at the
 /// point, and the curvature size interpolated from the vertices of its face. The curvature size
@@ -77,22 +90,12 @@ public:
     for(Vertex w : m.vertices_around_face(m.halfedge(f)))
       if(c < 3)
         v[c++] = w;
-    // Barycentric coordinates in the face's plane; clamped, for points on its edges.
-    const Epick::Vector_3 u = m.point(v[1]) - m.point(v[0]), w = m.point(v[2]) - m.point(v[0]), d = p - m.point(v[0]);
-    const double uu = u * u, uw = u * w, ww = w * w, du = d * u, dw = d * w, det = uu * ww - uw * uw;
-    double b1 = 0., b2 = 0.;
-    if(det > 0.)
-    {
-      b1 = (std::max)(0., (ww * du - uw * dw) / det);
-      b2 = (std::max)(0., (uu * dw - uw * du) / det);
-      const double sum = b1 + b2;
-      if(sum > 1.)
-      {
-        b1 /= sum;
-        b2 /= sum;
-      }
-    }
-    double size = (1. - b1 - b2) * vertex_size_[v[0]] + b1 * vertex_size_[v[1]] + b2 * vertex_size_[v[2]];
+    // Clamped and renormalized: `p` may lie a rounding error outside the face.
+    std::array<double, 3> b = barycentric(p, {{m.point(v[0]), m.point(v[1]), m.point(v[2])}});
+    for(double& x : b)
+      x = (std::max)(0., x);
+    const double sum = b[0] + b[1] + b[2];
+    double size = (b[0] * vertex_size_[v[0]] + b[1] * vertex_size_[v[1]] + b[2] * vertex_size_[v[2]]) / sum;
     if(field_)
       size = (std::min)(size, bounded(field_(p)));
     return size;
