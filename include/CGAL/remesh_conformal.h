@@ -311,6 +311,18 @@ inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, c
   return result;
 }
 
+// Barycentric coordinates of `p` (on the triangle's plane) in the triangle `t`.
+inline std::array<double, 3> barycentric(const Epick::Point_3& p, const std::array<Epick::Point_3, 3>& t)
+{
+  const Epick::Vector_3 u = t[1] - t[0], v = t[2] - t[0], w = p - t[0];
+  const double uu = u * u, uv = u * v, vv = v * v, wu = w * u, wv = w * v;
+  const double d = uu * vv - uv * uv;
+  if(!(d > 0.))
+    return {{1., 0., 0.}};
+  const double b1 = (vv * wu - uv * wv) / d, b2 = (uu * wv - uv * wu) / d;
+  return {{1. - b1 - b2, b1, b2}};
+}
+
 // Why glued triangles are not a manifold surface: an edge used twice in the same direction, or a
 // vertex where separate fans of triangles meet, with the place and the patches involved.
 inline std::string describe_glue_defect(const std::vector<std::array<std::size_t, 3> >& triangles,
@@ -552,7 +564,9 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
         patches[p] = extract_patch(segmentation, patch_faces[p]);
         flattenings[p] = conformal_flatten(patches[p].mesh, parameters::maximum_running_time(time_limit.remaining(), flattening_parameters));
         const Flattening_report& r = flattenings[p].report;
-        if(r.status != Error_code::SUCCESS)
+        if(r.status == Error_code::NOT_CONVERGED)
+          failures[p] = std::string(error_message(r.status)) + " (" + r.flow_message + ")";
+        else if(r.status != Error_code::SUCCESS)
           failures[p] = std::string(error_message(r.status)) + " (" + r.embedding.summary() + ")";
         else if(r.max_scale > maximum_scale_ratio * r.min_scale)
           failures[p] = "scale ratio " + std::to_string(r.max_scale / r.min_scale);

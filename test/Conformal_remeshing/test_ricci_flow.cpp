@@ -509,6 +509,7 @@ TEST(RicciFlow, CadSliverDiscNeedsFlips)
     const std::vector<double> targets = CR::disc_flattening_targets(t);
     auto r = CR::discrete_ricci_flow(t, targets, CR::parameters::curvature_tolerance(1e-9));
     EXPECT_TRUE(r.converged) << r.message << " error " << r.max_curvature_error;
+    EXPECT_FALSE(r.at_rounding_floor); // reached the tolerance itself
     EXPECT_LT(r.max_curvature_error, 1e-9);
     EXPECT_LE(r.iterations, 30);
     EXPECT_GT(r.number_of_flips, 0u);
@@ -530,6 +531,25 @@ TEST(RicciFlow, CadSliverDiscNeedsFlips)
     std::cout << "without flips: " << r.message << ", " << r.iterations << " iterations, error "
               << r.max_curvature_error << std::endl;
   }
+}
+
+// A tolerance below what double angle sums can resolve: the flow stops at the rounding floor
+// (a full Newton step no longer halves the error) instead of iterating to the limit, and says so.
+TEST(RicciFlow, StopsAtTheRoundingFloor)
+{
+  Soup s = cad_sliver_disc(20, 61, 0.4, 0.15);
+  Tri t = from_soup(s);
+  const std::vector<double> targets = CR::disc_flattening_targets(t);
+  const double tolerance = 1e-14;
+  auto r = CR::discrete_ricci_flow(t, targets, CR::parameters::curvature_tolerance(tolerance));
+  std::cout << r.message << " after " << r.iterations << " iterations" << std::endl;
+  EXPECT_TRUE(r.converged);
+  EXPECT_TRUE(r.at_rounding_floor);
+  EXPECT_EQ(r.status, CR::Error_code::SUCCESS);
+  EXPECT_LT(r.iterations, 50);
+  EXPECT_LT(r.max_curvature_error, 100 * tolerance);
+  EXPECT_NE(r.message.find("rounding floor"), std::string::npos);
+  EXPECT_NEAR(max_abs_diff(t.vertex_curvatures(), r.target_curvatures), r.max_curvature_error, 1e-15);
 }
 
 TEST(RicciFlow, ClosedGenusZeroWithCones)

@@ -84,6 +84,11 @@ struct Flattening_report
   /// itself is an embedding (informative only)
   std::size_t folded_input_triangles_in_uv = 0;
   double seconds_welding = 0., seconds_flow = 0., seconds_layout = 0., seconds_check = 0.;
+  /// why the flow stopped (`Ricci_flow_result::message`)
+  std::string flow_message;
+  /// parts of `seconds_flow`: flips and splits, Hessian factorizations, triangular solves and
+  /// conjugate gradients, line search (the rest is the assembly of curvatures and Hessian)
+  double seconds_flips = 0., seconds_factorization = 0., seconds_solve = 0., seconds_line_search = 0.;
 };
 
 /// \ingroup PkgConformalRemeshingRef
@@ -465,6 +470,11 @@ Conformal_flattening conformal_flatten(const TriangleMesh& mesh,
   report.iterations = flow.iterations;
   report.curvature_error = flow.max_curvature_error;
   report.flips = flow.number_of_flips;
+  report.flow_message = flow.message;
+  report.seconds_flips = flow.seconds_flips;
+  report.seconds_factorization = flow.seconds_factorization;
+  report.seconds_solve = flow.seconds_solve;
+  report.seconds_line_search = flow.seconds_line_search;
 
   // --- layout, and the patch region of the final triangulation --------------------------------
   const Clock::time_point layout_start = Clock::now();

@@ -126,17 +126,39 @@ inline Curve_samples sample_boundary_curves(const Poly_annulus_segmentation& s, 
   for(std::size_t c = 0; c < curves.size(); ++c)
   {
     const std::vector<Vertex>& curve = curves[c];
-    // Each edge's length weighted by the target over the local size (trapezoidal rule; exactly
-    // its length where the sizing is uniform).
+    // The curve in pieces, each weighted by the target over the local size: whole edges where
+    // the sizing is uniform (their lengths), else pieces of an edge at most half the local size
+    // long (trapezoidal rule), so that a long input edge is sampled as finely as the faces
+    // beside it are meshed.
     const double curve_spacing = c < halvings.size() ? std::ldexp(sizing.target(), -halvings[c]) : sizing.target();
-    std::vector<double> units(curve.size() - 1);
+    struct Piece
+    {
+      std::size_t edge;
+      double t0, t1, units;
+    };
+    std::vector<Piece> pieces_of_curve;
     double total = 0.;
     for(std::size_t i = 0; i + 1 < curve.size(); ++i)
     {
-      units[i] = std::sqrt(CGAL::squared_distance(m.point(curve[i]), m.point(curve[i + 1])));
-      if(!sizing.is_uniform())
-        units[i] *= 0.5 * (sizing.target() / sizing.at(curve[i]) + sizing.target() / sizing.at(curve[i + 1]));
-      total += units[i];
+      const double length = std::sqrt(CGAL::squared_distance(m.point(curve[i]), m.point(curve[i + 1])));
+      if(sizing.is_uniform())
+      {
+        pieces_of_curve.push_back(Piece{i, 0., 1., length});
+        total += length;
+        continue;
+      }
+      const double smallest = (std::min)(sizing.at(curve[i]), sizing.at(curve[i + 1]));
+      const int n = int((std::min)(256., std::ceil(2. * length / smallest)));
+      double size0 = sizing.at(curve[i]);
+      for(int j = 0; j < n; ++j)
+      {
+        const double t0 = double(j) / n, t1 = double(j + 1) / n;
+        const double size1 = j + 1 == n ? sizing.at(curve[i + 1]) : sizing.at(curve[i], curve[i + 1], t1);
+        const double units = (t1 - t0) * length * 0.5 * (sizing.target() / size0 + sizing.target() / size1);
+        pieces_of_curve.push_back(Piece{i, t0, t1, units});
+        total += units;
+        size0 = size1;
+      }
     }
     // A slit (a feature inside a patch, the same patch on both sides) is traversed once per side
     // by the same loop: with one piece, a slit whose ends are both free would be a loop of two
@@ -154,14 +176,16 @@ inline Curve_samples sample_boundary_curves(const Poly_annulus_segmentation& s, 
       samples.curve_of_chord[std::minmax(previous, next)] = c;
       previous = next;
     };
-    std::size_t e = 0;
-    double before = 0.; // curve units before edge e
+    std::size_t piece = 0;
+    double before = 0.; // curve units before the piece
     for(std::size_t k = 1; k < pieces; ++k)
     {
       const double at = step * double(k);
-      while(before + units[e] < at && e + 2 < curve.size())
-        before += units[e++];
-      const double t = (std::min)(1., (std::max)(0., (at - before) / units[e]));
+      while(before + pieces_of_curve[piece].units < at && piece + 1 < pieces_of_curve.size())
+        before += pieces_of_curve[piece++].units;
+      const Piece& p = pieces_of_curve[piece];
+      const std::size_t e = p.edge;
+      const double t = p.t0 + (p.t1 - p.t0) * (std::min)(1., (std::max)(0., (at - before) / p.units));
       const Epick::Point_3 &a = m.point(curve[e]), &b = m.point(curve[e + 1]);
       const Halfedge h = m.halfedge(curve[e], curve[e + 1]);
       const bool forward = curve[e] < curve[e + 1];

@@ -24,20 +24,10 @@ namespace Conformal_remeshing {
 namespace internal {
 namespace remeshing {
 
-// Barycentric coordinates of `p` (on the triangle's plane) in the triangle `t`.
-inline std::array<double, 3> barycentric(const Epick::Point_3& p, const std::array<Epick::Point_3, 3>& t)
-{
-  const Epick::Vector_3 u = t[1] - t[0], v = t[2] - t[0], w = p - t[0];
-  const double uu = u * u, uv = u * v, vv = v * v, wu = w * u, wv = w * v;
-  const double d = uu * vv - uv * uv;
-  if(!(d > 0.))
-    return {{1., 0., 0.}};
-  const double b1 = (vv * wu - uv * wv) / d, b2 = (uu * wv - uv * wu) / d;
-  return {{1. - b1 - b2, b1, b2}};
-}
-
 /// The size at a surface point: the smallest of the uniform target, the user's field at the
-/// point, and the curvature size interpolated from the vertices of its face. The curvature size
+/// point, and the graded sizes of the corners of its face (each corner's size plus the gradation
+/// times the distance to it: a long CAD sliver whose corners all lie on a curved rim still
+/// coarsens away from them, which a linear interpolation would not). The curvature size
 /// at a vertex is the length of a chord of a circle of the surface's largest normal curvature
 /// there whose sagitta is the chord error (sqrt(8 error / curvature)), graded so that it grows by
 /// at most `gradation` times the distance, and never below 1/16 of the target (noisy normals of
@@ -57,7 +47,7 @@ public:
 
   /// `field` may be empty; `chord_error` 0 means no curvature bound.
   Sizing(const Poly_annulus_segmentation& s, double target, const Field& field, double chord_error, double gradation = 0.5)
-    : s_(s), target_(target), field_(field)
+    : s_(s), target_(target), field_(field), gradation_(gradation)
   {
     if(!field_ && !(chord_error > 0.))
       return;
@@ -90,18 +80,27 @@ public:
     for(Vertex w : m.vertices_around_face(m.halfedge(f)))
       if(c < 3)
         v[c++] = w;
-    // Clamped and renormalized: `p` may lie a rounding error outside the face.
-    std::array<double, 3> b = barycentric(p, {{m.point(v[0]), m.point(v[1]), m.point(v[2])}});
-    for(double& x : b)
-      x = (std::max)(0., x);
-    const double sum = b[0] + b[1] + b[2];
-    double size = (b[0] * vertex_size_[v[0]] + b[1] * vertex_size_[v[1]] + b[2] * vertex_size_[v[2]]) / sum;
-    if(field_)
-      size = (std::min)(size, bounded(field_(p)));
-    return size;
+    return (std::min)(graded(p, v[0]), (std::min)(graded(p, v[1]), (std::min)(graded(p, v[2]), of_field(p))));
+  }
+
+  /// The size at the point at parameter `t` in [0, 1] of the edge from `a` to `b`.
+  double at(Vertex a, Vertex b, double t) const
+  {
+    if(is_uniform())
+      return target_;
+    const Epick::Point_3 &pa = s_.mesh.point(a), &pb = s_.mesh.point(b);
+    const Epick::Point_3 p(pa.x() + t * (pb.x() - pa.x()), pa.y() + t * (pb.y() - pa.y()), pa.z() + t * (pb.z() - pa.z()));
+    return (std::min)(graded(p, a), (std::min)(graded(p, b), of_field(p)));
   }
 
 private:
+  double graded(const Epick::Point_3& p, Vertex corner) const
+  {
+    return (std::min)(target_, vertex_size_[corner] + gradation_ * std::sqrt(CGAL::squared_distance(p, s_.mesh.point(corner))));
+  }
+
+  double of_field(const Epick::Point_3& p) const { return field_ ? bounded(field_(p)) : target_; }
+
   double bounded(double size) const
   {
     return std::isfinite(size) ? (std::min)(target_, (std::max)(size, target_ / 16.)) : target_;
@@ -175,6 +174,7 @@ private:
   const Poly_annulus_segmentation& s_;
   double target_;
   Field field_;
+  double gradation_ = 0.5;
   std::vector<double> vertex_size_; // empty when uniform
 };
 
