@@ -159,11 +159,12 @@ struct Record
 
 void write_library_report(tools::Json_writer& json, const CR::Remeshing_report& r)
 {
-  double welding = 0., layout = 0., check = 0., flips = 0., factorization = 0., solve = 0., line_search = 0.;
+  double welding = 0., refinement = 0., layout = 0., check = 0., flips = 0., factorization = 0., solve = 0., line_search = 0.;
   std::size_t iterations = 0, not_converged = 0, edge_splits = 0, boundary_splits = 0, welded_vertices = 0;
   for(const CR::Flattening_report& p : r.patches)
   {
     welding += p.seconds_welding;
+    refinement += p.seconds_refinement;
     layout += p.seconds_layout;
     check += p.seconds_check;
     flips += p.seconds_flips;
@@ -179,7 +180,8 @@ void write_library_report(tools::Json_writer& json, const CR::Remeshing_report& 
   json.key("library_seconds").begin_object()
       .field("segmentation", r.seconds_segmentation).field("flattening", r.seconds_flattening)
       .field("meshing_stage", r.seconds_meshing_stage).field("gluing", r.seconds_gluing)
-      .field("welding_thread_seconds", welding).field("ricci_flow_thread_seconds", r.seconds_ricci_flow)
+      .field("welding_thread_seconds", welding).field("refinement_thread_seconds", refinement) // part of welding
+      .field("ricci_flow_thread_seconds", r.seconds_ricci_flow)
       // parts of the flow: flips and splits to Delaunay, Hessian factorizations, solves, line search
       .field("ricci_flow_flips_thread_seconds", flips).field("ricci_flow_factorization_thread_seconds", factorization)
       .field("ricci_flow_solve_thread_seconds", solve).field("ricci_flow_line_search_thread_seconds", line_search)

@@ -722,6 +722,10 @@ void add_strip(CGAL::Surface_mesh<Point_3>& mesh, const std::vector<std::size_t>
   }
 }
 
+// The grid spacing of a curved face of radius of curvature `radius` (mm) whose chords deviate
+// from it by at most 0.1 mm, a common exporter tolerance: a chord of length L sags L^2 / 8R.
+inline double cad_curved_face_spacing(double radius) { return std::sqrt(8. * radius * 0.1); }
+
 } // namespace internal
 
 /// Adds to `mesh` a part swept by a planar outline through levels, top to bottom: level k is
@@ -810,15 +814,20 @@ void make_perforated_plate(CGAL::Surface_mesh<Point_3>& mesh, const Perforated_p
 /// Builds the top face of the plate of `p` alone: an open sheet of genus 0 with one boundary
 /// loop per hole plus the outer one, triangulated like `make_perforated_plate()`'s faces (fans of
 /// slivers). With `bend != 0` the sheet is bent around the y axis, `z = bend * x^2 / (length / 2)`,
-/// so that it is not flat.
+/// so that it is not flat: with `curved_face = false` its fans are bent along (a hostile input:
+/// neighbouring slivers then meet at false sharp edges), with `true` it is tessellated as
+/// exporters do curved faces, with interior grid points at the spacing whose chords stay within
+/// 0.1 of the surface (`cad_curved_face_spacing()` of its radius of curvature at x = 0).
 template <class Point_3>
-void make_perforated_sheet(CGAL::Surface_mesh<Point_3>& mesh, const Perforated_plate_parameters& p, double bend = 0.)
+void make_perforated_sheet(CGAL::Surface_mesh<Point_3>& mesh, const Perforated_plate_parameters& p, double bend = 0.,
+                           bool curved_face = false)
 {
   const Plate_outline outline = perforated_plate_outline(p);
   const double half = p.length / 2.;
+  const double spacing = curved_face && bend != 0. ? internal::cad_curved_face_spacing(half / (2. * std::abs(bend))) : 0.;
   mesh.clear();
   add_layered_part(mesh, std::vector<Plate_outline>(1, outline), {0.}, true, false,
-                   [&](double x, double y, double) { return Point_3(x, y, bend * x * x / half); });
+                   [&](double x, double y, double) { return Point_3(x, y, bend * x * x / half); }, spacing);
 }
 
 /// Builds an open flat disc (one boundary loop, genus 0) of radius `radius` in the plane z = 0,

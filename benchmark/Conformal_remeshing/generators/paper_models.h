@@ -351,10 +351,6 @@ int segments_for_target(std::size_t target, Count count)
   return target - count(low) <= count(high) - target ? low : high;
 }
 
-// The grid spacing of a curved face of radius of curvature `radius` (mm) whose chords deviate
-// from it by at most 0.1 mm, a common exporter tolerance: a chord of length L sags L^2 / 8R.
-inline double cad_curved_face_spacing(double radius) { return std::sqrt(8. * radius * 0.1); }
-
 // Insets and heights, top to bottom, of a fillet of radius `radius` between a face at height
 // `top` and a wall below it (inset 0), with `rings` intermediate rings; a quarter circle.
 inline void add_fillet_levels(double top, double radius, int rings, std::vector<double>& insets, std::vector<double>& heights)

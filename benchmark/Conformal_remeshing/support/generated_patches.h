@@ -19,7 +19,10 @@ namespace Conformal_remeshing {
 namespace benchmarks {
 
 /// The wavy C strip, optionally a spherical cap, and CAD-like bent sheets (10 holes, and also 1
-/// hole with `with_cap`), with their names.
+/// hole with `with_cap`), with their names. The bent sheets are tessellated as exporters do
+/// curved faces (grid points inside at a 0.1 chord tolerance; bending fans of slivers instead
+/// crumples them into false sharp edges, a generator defect rather than a CAD input); with
+/// `with_cap`, a flat sheet of fans of slivers with 10 holes too.
 template <typename Mesh>
 std::vector<std::pair<std::string, Mesh> > generated_patches(bool with_cap)
 {
@@ -38,8 +41,16 @@ std::vector<std::pair<std::string, Mesh> > generated_patches(bool with_cap)
     Mesh sheet;
     Perforated_plate_parameters p;
     p.number_of_random_holes = holes;
-    make_perforated_sheet(sheet, p, 0.3);
+    make_perforated_sheet(sheet, p, 0.3, true);
     models.emplace_back("CAD sheet, " + std::to_string(holes) + " holes", sheet);
+  }
+  if(with_cap)
+  {
+    Mesh flat;
+    Perforated_plate_parameters p;
+    p.number_of_random_holes = 10;
+    make_perforated_sheet(flat, p);
+    models.emplace_back("flat CAD sheet, 10 holes", flat);
   }
   return models;
 }

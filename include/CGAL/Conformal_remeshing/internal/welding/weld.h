@@ -88,60 +88,6 @@ struct Indexed_patch
     boundary_loops[loop_index] = refined;
   }
 
-  /// Splits every edge longer than `max_length` at its midpoint, longest first, until none is
-  /// left: the input's long CAD slivers become chains of shorter triangles on the same surface,
-  /// so that the map, affine in each triangle, can follow the conformal factor. Returns false
-  /// (the patch then half split, to be dropped) as soon as more than `max_splits` are needed.
-  bool split_long_edges(double max_length, std::size_t max_splits)
-  {
-    const std::size_t points_before = points.size();
-    Edge_faces face_of = directed_edge_faces();
-    std::map<int, int> loop_next; // along the boundary loops
-    for(const auto& loop : boundary_loops)
-      for(std::size_t i = 0; i < loop.size(); ++i)
-        loop_next[loop[i]] = loop[(i + 1) % loop.size()];
-    for(bool again = true; again;)
-    {
-      std::vector<std::pair<double, std::pair<int, int> > > long_edges;
-      for(const auto& e : face_of)
-        if(e.first.first < e.first.second || !face_of.count({e.first.second, e.first.first}))
-        {
-          const double l = distance(points[e.first.first], points[e.first.second]);
-          if(l > max_length)
-            long_edges.push_back({l, e.first});
-        }
-      std::sort(long_edges.rbegin(), long_edges.rend());
-      again = !long_edges.empty();
-      for(const auto& e : long_edges)
-      {
-        const int a = e.second.first, b = e.second.second;
-        // The edge may have been split already in this round.
-        if(!face_of.count({a, b}) && !face_of.count({b, a}))
-          continue;
-        if(points.size() - points_before >= max_splits)
-          return false;
-        const int m = split_edge(a, b, face_of);
-        for(const std::pair<int, int>& border : {std::make_pair(a, b), std::make_pair(b, a)})
-        {
-          auto it = loop_next.find(border.first);
-          if(it != loop_next.end() && it->second == border.second)
-          {
-            it->second = m;
-            loop_next[m] = border.second;
-          }
-        }
-      }
-    }
-    for(auto& loop : boundary_loops)
-    {
-      const int start = loop.front();
-      loop.assign(1, start);
-      for(int v = loop_next.at(start); v != start; v = loop_next.at(v))
-        loop.push_back(v);
-    }
-    return true;
-  }
-
 private:
   typedef std::map<std::pair<int, int>, int> Edge_faces; // directed edge -> the face holding it
 
