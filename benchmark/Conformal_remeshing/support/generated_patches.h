@@ -50,7 +50,7 @@ std::vector<std::pair<std::string, Mesh> > generated_patches(bool with_cap)
     Perforated_plate_parameters p;
     p.number_of_random_holes = 10;
     make_perforated_sheet(flat, p);
-    models.emplace_back("flat CAD sheet, 10 holes", flat);
+    models.emplace_back("flat sheet, 10 holes", flat);
   }
   return models;
 }
