@@ -523,13 +523,38 @@ Conformal_flattening conformal_flatten(const TriangleMesh& mesh,
   typedef Intrinsic_triangulation<double>::Face_location Location;
   std::vector<char> in_patch(tri.number_of_faces(), 0);
   result.face_region.resize(tri.number_of_faces());
-  for(int f = 0; f < tri.number_of_faces(); ++f)
+  // The regions are bounded by seams (welded and hole loops), which are never flipped, and their
+  // split halves: one walk back through the correspondence per connected set of faces across the
+  // other edges suffices (a walk per face took most of the 24 s of layout of issue #7's 87k arm).
   {
-    const Location initial = tri.to_input(Location{f, {{1. / 3, 1. / 3, 1. / 3}}});
-    in_patch[f] = initial.face < int(disc.patch_faces);
-    result.face_region[f] = in_patch[f] ? Welded_region::PATCH
-                            : initial.face < int(disc.patch_faces + disc.fill_faces) ? Welded_region::HOLE_FILL
-                                                                                     : Welded_region::ANNULUS;
+    std::vector<char> seen(tri.number_of_faces(), 0);
+    std::vector<int> stack;
+    for(int start = 0; start < tri.number_of_faces(); ++start)
+    {
+      if(seen[start])
+        continue;
+      const Location initial = tri.to_input(Location{start, {{1. / 3, 1. / 3, 1. / 3}}});
+      const Welded_region region = initial.face < int(disc.patch_faces) ? Welded_region::PATCH
+                                   : initial.face < int(disc.patch_faces + disc.fill_faces) ? Welded_region::HOLE_FILL
+                                                                                            : Welded_region::ANNULUS;
+      seen[start] = 1;
+      stack.assign(1, start);
+      while(!stack.empty())
+      {
+        const int f = stack.back();
+        stack.pop_back();
+        result.face_region[f] = region;
+        in_patch[f] = region == Welded_region::PATCH;
+        for(int c = 0; c < 3; ++c)
+        {
+          const int h = tri.halfedge(f, c), t = tri.opposite(h);
+          if(t < 0 || tri.is_unflippable(tri.edge(h)) || seen[tri.face(t)])
+            continue;
+          seen[tri.face(t)] = 1;
+          stack.push_back(tri.face(t));
+        }
+      }
+    }
   }
   const std::vector<Intrinsic_triangulation<double>::Point_2> positions = tri.layout();
   time_limit.check("after the layout");
@@ -548,12 +573,17 @@ Conformal_flattening conformal_flatten(const TriangleMesh& mesh,
   // The domain boundary: loops of the patch region, each vertex with its surface point.
   std::vector<std::vector<int> > loops = internal::region_boundary_loops(tri, in_patch);
   std::map<int, Domain_point> domain_point;
+  for(const std::vector<int>& loop : loops)
+    for(int v : loop)
+      domain_point.emplace(v, Domain_point());
+  std::vector<char> located(tri.number_of_vertices(), 0);
   for(std::size_t t = 0; t < result.triangles.size(); ++t)
     for(int c = 0; c < 3; ++c)
     {
       const int v = result.triangles[t][c];
-      if(domain_point.count(v))
+      if(located[v] || !domain_point.count(v))
         continue;
+      located[v] = 1;
       std::array<double, 3> b{{0., 0., 0.}};
       b[c] = 1.;
       domain_point[v] = result.to_surface(t, b);
