@@ -250,7 +250,6 @@ inline std::vector<std::vector<int> > region_boundary_loops(const Intrinsic_tria
   return loops;
 }
 
-
 // Splits the edges of the patch region of `tri` (between vertices below `patch_vertices`, or
 // added by these splits) longer than `maximum_length` at their midpoints, in the intrinsic
 // Delaunay triangulation, until none is left, so that the conformal factor is resolved at that
@@ -572,25 +571,21 @@ Conformal_flattening conformal_flatten(const TriangleMesh& mesh,
 
   // The domain boundary: loops of the patch region, each vertex with its surface point.
   std::vector<std::vector<int> > loops = internal::region_boundary_loops(tri, in_patch);
-  std::map<int, Domain_point> domain_point;
-  for(const std::vector<int>& loop : loops)
-    for(int v : loop)
-      domain_point.emplace(v, Domain_point());
-  std::vector<char> located(tri.number_of_vertices(), 0);
-  for(std::size_t t = 0; t < result.triangles.size(); ++t)
-    for(int c = 0; c < 3; ++c)
-    {
-      const int v = result.triangles[t][c];
-      if(located[v] || !domain_point.count(v))
-        continue;
-      located[v] = 1;
-      std::array<double, 3> b{{0., 0., 0.}};
-      b[c] = 1.;
-      domain_point[v] = result.to_surface(t, b);
-      domain_point[v].uv = result.layout[v];
-      if(v < int(patch.number_of_input_vertices))
-        domain_point[v].input_vertex = std::size_t(v);
-    }
+  // The first corner of a patch triangle at each vertex (visited backwards, the first one written
+  // last), to map the loops' vertices, the only ones the domain needs, to the surface.
+  std::vector<std::pair<std::size_t, int> > corner_at(tri.number_of_vertices());
+  for(std::size_t t = result.triangles.size(); t-- > 0;)
+    for(int c = 3; c-- > 0;)
+      corner_at[result.triangles[t][c]] = {t, c};
+  auto domain_point = [&](int v) {
+    std::array<double, 3> b{{0., 0., 0.}};
+    b[corner_at[v].second] = 1.;
+    Domain_point point = result.to_surface(corner_at[v].first, b);
+    point.uv = result.layout[v];
+    if(v < int(patch.number_of_input_vertices))
+      point.input_vertex = std::size_t(v);
+    return point;
+  };
   // The outer loop: the welded one; for a planar patch, the one enclosing the largest area.
   int outer_marker = patch.boundary_loops[welded].front();
   if(planar)
@@ -615,7 +610,7 @@ Conformal_flattening conformal_flatten(const TriangleMesh& mesh,
   {
     std::vector<Domain_point> polygon;
     for(int v : loop)
-      polygon.push_back(domain_point.at(v));
+      polygon.push_back(domain_point(v));
     if(std::find(loop.begin(), loop.end(), outer_marker) != loop.end())
       result.outer_boundary = polygon;
     else
