@@ -187,6 +187,7 @@ void write_library_report(tools::Json_writer& json, const CR::Remeshing_report& 
       .field("ricci_flow_solve_thread_seconds", solve).field("ricci_flow_line_search_thread_seconds", line_search)
       .field("layout_thread_seconds", layout).field("embedding_check_thread_seconds", check)
       .field("planar_meshing_thread_seconds", r.seconds_planar_meshing)
+      .field("optimization_thread_seconds", r.seconds_optimization)
       .field("pull_back_thread_seconds", r.seconds_pull_back).end_object();
   json.key("segmentation").begin_object().field("patches", r.number_of_patches).field("plane_cuts", r.plane_cuts)
       .field("patch_bisections", r.patch_bisections).field("feature_edges", r.feature_edges)

@@ -106,30 +106,51 @@ struct Surface_location
 namespace internal {
 namespace remeshing {
 
+// The surface point of every vertex of the flat triangulation. A patch vertex has its own point;
+// a vertex that the refinement inserted is mapped once through the correspondence. (Mapping every
+// triangle corner back through the flips, up to millions on a CAD fan, took most of the planar
+// meshing time of issue #7's 87k arm.)
+inline std::vector<Epick::Point_3> vertex_surface_points(const Conformal_flattening& flat)
+{
+  std::vector<Epick::Point_3> point(flat.layout.size());
+  std::vector<char> known(flat.layout.size(), 0);
+  for(std::size_t v = 0; v < (std::min)(flat.patch.points.size(), point.size()); ++v)
+  {
+    const internal::welding::Vec3& x = flat.patch.points[v];
+    point[v] = Epick::Point_3(x[0], x[1], x[2]);
+    known[v] = 1;
+  }
+  for(std::size_t t = 0; t < flat.triangles.size(); ++t)
+    for(int c = 0; c < 3; ++c)
+      if(!known[flat.triangles[t][c]])
+      {
+        std::array<double, 3> b{{0., 0., 0.}};
+        b[c] = 1.;
+        point[flat.triangles[t][c]] = flat.to_surface(t, b).point;
+        known[flat.triangles[t][c]] = 1;
+      }
+  return point;
+}
+
 // The local scale of the map (planar length over surface length) at the vertices of the flat
 // triangulation, averaged over their triangles: the size field's factor (DESIGN.md 2.8).
 inline std::vector<double> local_scale(const Conformal_flattening& flat)
 {
+  const std::vector<Epick::Point_3> point = vertex_surface_points(flat);
   std::vector<double> scale(flat.layout.size(), 0.), weight(flat.layout.size(), 0.);
-  for(std::size_t t = 0; t < flat.triangles.size(); ++t)
+  for(const std::array<int, 3>& triangle : flat.triangles)
   {
-    std::array<Epick::Point_3, 3> corner;
-    for(int c = 0; c < 3; ++c)
-    {
-      std::array<double, 3> b{{0., 0., 0.}};
-      b[c] = 1.;
-      corner[c] = flat.to_surface(t, b).point;
-    }
     double planar = 0., spatial = 0.;
     for(int c = 0; c < 3; ++c)
     {
-      planar += std::sqrt(CGAL::squared_distance(flat.layout[flat.triangles[t][c]], flat.layout[flat.triangles[t][(c + 1) % 3]]));
-      spatial += std::sqrt(CGAL::squared_distance(corner[c], corner[(c + 1) % 3]));
+      const int v = triangle[c], w = triangle[(c + 1) % 3];
+      planar += std::sqrt(CGAL::squared_distance(flat.layout[v], flat.layout[w]));
+      spatial += std::sqrt(CGAL::squared_distance(point[v], point[w]));
     }
-    for(int c = 0; c < 3; ++c)
+    for(int v : triangle)
     {
-      scale[flat.triangles[t][c]] += planar / spatial;
-      weight[flat.triangles[t][c]] += 1.;
+      scale[v] += planar / spatial;
+      weight[v] += 1.;
     }
   }
   for(std::size_t v = 0; v < scale.size(); ++v)

@@ -116,6 +116,7 @@ public:
       }
     std::sort(half_edges.begin(), half_edges.end());
     fixed_.assign(nv, 0);
+    settled_.assign(nv, 0);
     valence_.assign(nv, 0);
     for(std::size_t i = 0; i < half_edges.size();)
     {
@@ -204,13 +205,14 @@ public:
   /// Moves every free vertex toward the centroid of its star's triangle centroids weighted by
   /// their surface areas (a Lloyd-like step: it evens out sizes and shapes), or part of the way,
   /// when that lowers the summed skewness of the star on the surface and keeps the bounds.
+  /// A vertex within a hundredth of its edges from that centroid stays.
   std::size_t smoothing_pass()
   {
     std::size_t moves = 0;
     std::vector<int> ring;
     for(std::size_t v = 0; v < points_.size(); ++v)
     {
-      if(fixed_[v] || !interior_ring(int(v), ring))
+      if(fixed_[v] || (settled_[v] & SMOOTHING) || !interior_ring(int(v), ring))
         continue;
       const Point_2 p = points_[v];
       double weight = 0., x = 0., y = 0.;
@@ -225,16 +227,26 @@ public:
       if(!(weight > 0.))
         continue;
       const Point_2 centroid(x / weight, y / weight);
+      if(CGAL::squared_distance(p, centroid) < CGAL::square(0.01 * mean_planar_edge(int(v), ring)))
+      {
+        settled_[v] |= SMOOTHING;
+        continue;
+      }
       const double limit = move_limit(positions_[v], ring), energy = star_skewness(positions_[v], ring);
+      const Linear_map_2_3 jacobian = star_jacobian(int(v), ring);
+      bool moved_once = false;
       for(double t : {1., 0.5, 0.25})
       {
-        const Point_2 moved(p.x() + t * (centroid.x() - p.x()), p.y() + t * (centroid.y() - p.y()));
-        if(try_move(int(v), moved, ring, limit, energy))
+        const Epick::Vector_2 step = t * (centroid - p);
+        if(predicts_lower_skewness(int(v), ring, jacobian(step), energy) && try_move(int(v), p + step, ring, limit, energy))
         {
-          ++moves;
+          moved_once = true;
           break;
         }
       }
+      moves += moved_once;
+      if(!moved_once)
+        settled_[v] |= SMOOTHING;
     }
     return moves;
   }
@@ -249,33 +261,91 @@ public:
     std::vector<int> ring;
     for(std::size_t v = 0; v < points_.size(); ++v)
     {
-      if(fixed_[v] || !interior_ring(int(v), ring))
+      if(fixed_[v] || (settled_[v] & SKEWNESS) || !interior_ring(int(v), ring))
         continue;
       double worst = 0.;
       for(std::size_t i = 0; i < ring.size(); ++i)
         worst = (std::max)(worst, Triangle_shape::skewness(positions_[v], positions_[ring[i]], positions_[ring[(i + 1) % ring.size()]]));
       if(worst < threshold)
         continue;
-      double mean = 0.;
-      for(int w : ring)
-        mean += std::sqrt(CGAL::squared_distance(points_[v], points_[w]));
-      mean /= double(ring.size());
+      const double mean = mean_planar_edge(int(v), ring);
       const double limit = move_limit(positions_[v], ring);
       const double directions[4][2] = {{1., 0.}, {0., 1.}, {-1., 0.}, {0., -1.}};
       bool moved_once = false;
-      for(double step = 0.1 * mean; step >= 0.1 * mean / 4.; step *= 0.5)
+      const Linear_map_2_3 jacobian = star_jacobian(int(v), ring);
+      for(double length = 0.1 * mean; length >= 0.1 * mean / 4.; length *= 0.5)
         for(const auto& d : directions)
         {
-          const Point_2 p = points_[v];
-          if(try_move(int(v), Point_2(p.x() + step * d[0], p.y() + step * d[1]), ring, limit, star_skewness(positions_[v], ring)))
+          const Epick::Vector_2 step(length * d[0], length * d[1]);
+          const double energy = star_skewness(positions_[v], ring);
+          if(predicts_lower_skewness(int(v), ring, jacobian(step), energy)
+             && try_move(int(v), points_[v] + step, ring, limit, energy))
             moved_once = true;
         }
       moves += moved_once;
+      if(!moved_once)
+        settled_[v] |= SKEWNESS;
     }
     return moves;
   }
 
 private:
+  // A vertex whose last smoothing (or skewness) move was refused, or that sits at its centroid, is
+  // settled for that kind of move until it or a neighbour moves, or a flip changes its star:
+  // trying again would lift the same points and refuse them again.
+  enum Settled : unsigned char
+  {
+    SMOOTHING = 1,
+    SKEWNESS = 2
+  };
+
+  void unsettle(int v) { settled_[v] = 0; }
+
+  // The plane-to-surface map near a vertex, to first order: the linear map that best carries the
+  // planar edges of its star to their surface edges (least squares). It predicts the surface move
+  // of a small planar move well enough to skip, without lifting them, the moves that would not
+  // lower the star's skewness: each lift walks back through the flow's flips (up to millions on
+  // CAD fans), and the optimization's lifts took most of the meshing stage of issue #7's arm.
+  // Every move made is still judged at its lifted point.
+  struct Linear_map_2_3
+  {
+    Epick::Vector_3 column_x, column_y;
+    Epick::Vector_3 operator()(const Epick::Vector_2& d) const { return d.x() * column_x + d.y() * column_y; }
+  };
+
+  bool predicts_lower_skewness(int v, const std::vector<int>& ring, const Epick::Vector_3& surface_move, double energy) const
+  {
+    return star_skewness(positions_[v] + surface_move, ring) < energy;
+  }
+
+  double mean_planar_edge(int v, const std::vector<int>& ring) const
+  {
+    double sum = 0.;
+    for(int w : ring)
+      sum += std::sqrt(CGAL::squared_distance(points_[v], points_[w]));
+    return sum / double(ring.size());
+  }
+
+  Linear_map_2_3 star_jacobian(int v, const std::vector<int>& ring) const
+  {
+    double a = 0., b = 0., c = 0.; // the normal matrix [a b; b c] of the planar edges
+    Epick::Vector_3 bx = CGAL::NULL_VECTOR, by = CGAL::NULL_VECTOR;
+    for(int w : ring)
+    {
+      const Epick::Vector_2 d = points_[w] - points_[v];
+      const Epick::Vector_3 e = positions_[w] - positions_[v];
+      a += d.x() * d.x();
+      b += d.x() * d.y();
+      c += d.y() * d.y();
+      bx = bx + d.x() * e;
+      by = by + d.y() * e;
+    }
+    const double det = a * c - b * b;
+    if(!(det > 0.))
+      return {CGAL::NULL_VECTOR, CGAL::NULL_VECTOR};
+    return {(c * bx - b * by) / det, (a * by - b * bx) / det};
+  }
+
   // Whether flipping (c, a, b), (d, b, a) into (c, a, d), (c, d, b) creates no angle below the
   // smaller of the bound and the smallest angle before.
   bool keeps_angle_bound(const Point_3& pa, const Point_3& pb, const Point_3& pc, const Point_3& pd) const
@@ -328,6 +398,9 @@ private:
       return false;
     points_[v] = moved;
     positions_[v] = x;
+    unsettle(v);
+    for(int w : ring)
+      unsettle(w);
     return true;
   }
 
@@ -391,6 +464,8 @@ private:
     --valence_[b];
     ++valence_[c];
     ++valence_[d];
+    for(int v : {a, b, c, d})
+      unsettle(v);
   }
 
   void relink(int w, int from, int to)
@@ -410,6 +485,7 @@ private:
   std::vector<std::array<int, 3> > neighbor_;
   std::vector<int> incident_, valence_, target_;
   std::vector<char> fixed_;
+  std::vector<unsigned char> settled_;
   std::vector<std::size_t> sample_ids_;
   std::set<std::pair<std::size_t, std::size_t> > forbidden_diagonals_;
 };
