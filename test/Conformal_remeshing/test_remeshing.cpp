@@ -316,11 +316,42 @@ TEST(SurfaceOptimization, KeepsTheDomainAndImprovesTheShapesOnTheSurface)
   for(std::size_t v = 0; v < points.size(); ++v)
     EXPECT_EQ(positions[v], wavy_lift(points[v])); // kept on the surface
   EXPECT_GE(after.smallest_angle, (std::min)(28., before.smallest_angle) - 1e-9);
+  // No edge on the surface longer than the bound given (0.07), or than the longest one before.
+  const auto longest_edge = [&](const std::vector<std::array<int, 3> >& mesh, const std::vector<CGAL::Epick::Point_3>& at) {
+    double longest = 0.;
+    for(const auto& t : mesh)
+      for(int c = 0; c < 3; ++c)
+        longest = (std::max)(longest, std::sqrt(CGAL::squared_distance(at[t[c]], at[t[(c + 1) % 3]])));
+    return longest;
+  };
+  std::vector<CGAL::Epick::Point_3> raw_positions;
+  for(const auto& p : raw.points)
+    raw_positions.push_back(wavy_lift(p));
+  EXPECT_LE(longest_edge(triangles, positions), (std::max)(0.07, longest_edge(raw.triangles, raw_positions)) * (1. + 1e-12));
   EXPECT_GT(after.regular, before.regular);
   EXPECT_LT(after.mean_skewness, before.mean_skewness - 0.02);
   // Issue #5's bar of 0.12 is for whole remeshings (checked in remeshing_checks.h); on this small
   // domain a large share of the triangles touch the fixed boundary samples.
   EXPECT_LT(after.mean_skewness, 0.125);
+}
+
+TEST(RemeshConformal, LocationsInSliversAreExact)
+{
+  // The output locations are barycentric coordinates in input faces; on a CAD sliver the Gram
+  // determinant cancels to 0 (here: 0.25 + 1e-18 - 0.25) and the point came back elsewhere.
+  const std::array<K::Point_3, 3> sliver{{K::Point_3(0., 0., 0.), K::Point_3(1., 0., 0.), K::Point_3(0.5, 1e-9, 0.)}};
+  const K::Point_3 p(0.5, 0.5e-9, 0.);
+  const std::array<double, 3> b = CR::internal::remeshing::barycentric(p, sliver);
+  EXPECT_NEAR(b[0], 0.25, 1e-6);
+  EXPECT_NEAR(b[1], 0.25, 1e-6);
+  EXPECT_NEAR(b[2], 0.5, 1e-6);
+  const K::Point_3 back = CGAL::barycenter(sliver[0], b[0], sliver[1], b[1], sliver[2], b[2]);
+  EXPECT_LT(std::sqrt(CGAL::squared_distance(back, p)), 1e-15);
+  // A face without area: the place on its longest side.
+  const std::array<K::Point_3, 3> flat{{K::Point_3(0., 0., 0.), K::Point_3(1., 0., 0.), K::Point_3(0.25, 0., 0.)}};
+  const std::array<double, 3> c = CR::internal::remeshing::barycentric(K::Point_3(0.75, 0., 0.), flat);
+  const K::Point_3 on_side = CGAL::barycenter(flat[0], c[0], flat[1], c[1], flat[2], c[2]);
+  EXPECT_LT(std::sqrt(CGAL::squared_distance(on_side, K::Point_3(0.75, 0., 0.))), 1e-15);
 }
 
 TEST(SurfaceOptimization, LeavesANonManifoldInputAsIs)

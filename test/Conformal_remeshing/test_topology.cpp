@@ -105,9 +105,10 @@ TEST(RemeshAnyTopology, OpenSheetWithHoles)
   // The sheet is smooth, but bending its sliver fans makes neighbouring slivers meet at more
   // than 60 degrees: no feature detection here (patches that touch themselves at a vertex, which
   // such false features make, are a known weakness of the flow; see the manual).
-  // The smallest angle is 17.7 degrees (measured; the bar of 20 is not met here): a triangle at the
-  // rim, lifted onto the creases between bent slivers (the surface is not smooth at its scale).
-  check_remeshing(sheet, 17., CR::parameters::features_angle(0.));
+  // The smallest angle is 16.2 degrees (measured; the bar of 20 is not met here): a triangle at the
+  // rim, lifted onto the creases between bent slivers (the surface is not smooth at its scale);
+  // the optimization lifted it to 17.7 before its moves were kept from stretching edges.
+  check_remeshing(sheet, 16., CR::parameters::features_angle(0.));
 }
 
 TEST(RemeshAnyTopology, BentCadSheetWithDefaultFeatures)

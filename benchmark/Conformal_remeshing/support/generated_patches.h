@@ -18,7 +18,7 @@ namespace CGAL {
 namespace Conformal_remeshing {
 namespace benchmarks {
 
-/// The wavy C strip, optionally a spherical cap, and CAD-like bent sheets (10 holes, and also 1
+/// The wavy C strip, optionally a spherical cap (coarse and fine), and CAD-like bent sheets (10 holes, and also 1
 /// hole with `with_cap`), with their names. The bent sheets are tessellated as exporters do
 /// curved faces (grid points inside at a 0.1 chord tolerance; bending fans of slivers instead
 /// crumples them into false sharp edges, a generator defect rather than a CAD input); with
@@ -32,9 +32,13 @@ std::vector<std::pair<std::string, Mesh> > generated_patches(bool with_cap)
   models.emplace_back("wavy C strip", strip);
   if(with_cap)
   {
-    Mesh cap;
+    Mesh cap, fine_cap;
     make_spherical_cap(cap, 120., 16, 48);
     models.emplace_back("spherical cap", cap);
+    // The same cap with edges 0.6 times the target instead of 5.7 times: a remesher that starts
+    // from the input's faces (the peer) no longer lies on them, and the distances compare shapes.
+    make_spherical_cap(fine_cap, 120., 160, 480);
+    models.emplace_back("spherical cap, fine", fine_cap);
   }
   for(int holes : with_cap ? std::vector<int>{1, 10} : std::vector<int>{10})
   {
