@@ -490,7 +490,7 @@ void for_each_patch(std::size_t n, const Task& task)
 ///     \cgalParamDefault{3}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{optimization_rounds}
-///     \cgalParamDescription{rounds of edge flips toward valence 6 and vertex smoothing after the refinement, judged by the triangles' shapes on the surface; no round lowers the smallest angle below the `minimum_angle` bound (`Conformal_remeshing::parameters::optimization_rounds()`)}
+///     \cgalParamDescription{rounds of edge flips toward valence 6 and vertex smoothing after the refinement, judged by the triangles' shapes on the surface; no round lowers the smallest angle below the `minimum_angle` bound or stretches an edge past 1.4 times the target (`Conformal_remeshing::parameters::optimization_rounds()`)}
 ///     \cgalParamDefault{5}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{maximum_scale_ratio}
