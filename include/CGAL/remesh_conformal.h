@@ -124,9 +124,7 @@ inline std::vector<Epick::Point_3> vertex_surface_points(const Conformal_flatten
     for(int c = 0; c < 3; ++c)
       if(!known[flat.triangles[t][c]])
       {
-        std::array<double, 3> b{{0., 0., 0.}};
-        b[c] = 1.;
-        point[flat.triangles[t][c]] = flat.to_surface(t, b).point;
+        point[flat.triangles[t][c]] = flat.corner_to_surface(t, c).point;
         known[flat.triangles[t][c]] = 1;
       }
   return point;
@@ -242,7 +240,8 @@ inline Glue_check check_glue(const std::vector<std::vector<Boundary_sample> >& l
 // Planar Delaunay refinement of a flattened patch with the shared boundary samples, then the
 // pull-back of the new points onto the surface through the flow's correspondence.
 // No edge joins the two samples of a pair in `diagonals_to_split` (sample indices, smaller first).
-inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, const Extracted_patch& patch,
+inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, const std::vector<double>& scale,
+                                             const Extracted_patch& patch,
                                              const Curve_samples& samples, const Sizing& sizing, double min_angle,
                                              int smoothing_iterations, int optimization_rounds,
                                              const std::set<std::pair<std::size_t, std::size_t> >& diagonals_to_split = {})
@@ -251,7 +250,6 @@ inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, c
   Clock::time_point start = Clock::now();
   Remeshed_patch result;
   const Planar_locator locator(flat.layout, flat.triangles);
-  const std::vector<double> scale = local_scale(flat);
   const std::function<double(const Epick::Point_2&)> planar_size = [&](const Epick::Point_2& p) {
     const Planar_locator::Location l = locator.locate(p);
     double s = 0.;
@@ -680,6 +678,7 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
   std::vector<int> halvings;
   internal::remeshing::Curve_samples samples;
   std::vector<internal::remeshing::Remeshed_patch> remeshed(patches.size());
+  std::vector<std::vector<double> > scales(patches.size()); // each flattening's local scale, once
   std::vector<std::set<std::pair<std::size_t, std::size_t> > > diagonals_to_split;
   std::vector<std::size_t> to_mesh;
   bool resample = true;
@@ -699,8 +698,10 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
       try
       {
         time_limit.check("while meshing the patches");
-        remeshed[p] = internal::remeshing::remesh_flattened_patch(flattenings[p], patches[p], samples, sizing, min_angle, smoothing,
-                                                                  optimization_rounds, diagonals_to_split[p]);
+        if(scales[p].empty()) // a patch may be meshed again (denser curves, split diagonals)
+          scales[p] = internal::remeshing::local_scale(flattenings[p]);
+        remeshed[p] = internal::remeshing::remesh_flattened_patch(flattenings[p], scales[p], patches[p], samples, sizing, min_angle,
+                                                                  smoothing, optimization_rounds, diagonals_to_split[p]);
       }
       catch(const Error& e)
       {

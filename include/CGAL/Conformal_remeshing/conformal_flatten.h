@@ -145,6 +145,14 @@ struct Conformal_flattening
     return p;
   }
 
+  /// The surface point at corner `c` of `triangles[t]`: the image of that vertex.
+  Domain_point corner_to_surface(std::size_t t, int c) const
+  {
+    std::array<double, 3> b{{0., 0., 0.}};
+    b[c] = 1.;
+    return to_surface(t, b);
+  }
+
   /// the final intrinsic triangulation of the welded disc and the (refined) patch it started from
   Intrinsic_triangulation<double> triangulation;
   internal::welding::Indexed_patch patch;
@@ -578,9 +586,7 @@ Conformal_flattening conformal_flatten(const TriangleMesh& mesh,
     for(int c = 3; c-- > 0;)
       corner_at[result.triangles[t][c]] = {t, c};
   auto domain_point = [&](int v) {
-    std::array<double, 3> b{{0., 0., 0.}};
-    b[corner_at[v].second] = 1.;
-    Domain_point point = result.to_surface(corner_at[v].first, b);
+    Domain_point point = result.corner_to_surface(corner_at[v].first, corner_at[v].second);
     point.uv = result.layout[v];
     if(v < int(patch.number_of_input_vertices))
       point.input_vertex = std::size_t(v);

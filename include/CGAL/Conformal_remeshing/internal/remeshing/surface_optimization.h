@@ -273,14 +273,17 @@ public:
       const double directions[4][2] = {{1., 0.}, {0., 1.}, {-1., 0.}, {0., -1.}};
       bool moved_once = false;
       const Linear_map_2_3 jacobian = star_jacobian(int(v), ring);
+      double energy = star_skewness(positions_[v], ring);
       for(double length = 0.1 * mean; length >= 0.1 * mean / 4.; length *= 0.5)
         for(const auto& d : directions)
         {
           const Epick::Vector_2 step(length * d[0], length * d[1]);
-          const double energy = star_skewness(positions_[v], ring);
           if(predicts_lower_skewness(int(v), ring, jacobian(step), energy)
              && try_move(int(v), points_[v] + step, ring, limit, energy))
+          {
             moved_once = true;
+            energy = star_skewness(positions_[v], ring);
+          }
         }
       moves += moved_once;
       if(!moved_once)
