@@ -368,6 +368,39 @@ TEST(ConformalFlatten, CgalMeshesWithBoundaries)
   }
 }
 
+TEST(ConformalFlatten, SliversFlatInDoubleLengthsAreOpened)
+{
+  // A grid sheet, flat and bent along y, with a CAD sliver on each edge of its straight border
+  // y = 0: its apex lies 1e-13 off the border, so its largest angle is pi - 4e-13, a valid
+  // triangle for exact predicates whose double lengths violate the triangle inequality (the
+  // full-scale chassis of issue #7 has 93 such faces in one patch).
+  for(double bend : {0., 0.3})
+  {
+    SCOPED_TRACE("bend " + std::to_string(bend));
+    Mesh mesh;
+    const int n = 8;
+    auto point = [&](double x, double y) { return K::Point_3(x, y, bend * y * y); };
+    std::vector<Mesh::Vertex_index> grid;
+    for(int j = 0; j <= n; ++j)
+      for(int i = 0; i <= n; ++i)
+        grid.push_back(mesh.add_vertex(point(i, j)));
+    auto at = [&](int i, int j) { return grid[std::size_t(j * (n + 1) + i)]; };
+    for(int j = 0; j < n; ++j)
+      for(int i = 0; i < n; ++i)
+      {
+        mesh.add_face(at(i, j), at(i + 1, j), at(i + 1, j + 1));
+        mesh.add_face(at(i, j), at(i + 1, j + 1), at(i, j + 1));
+      }
+    for(int i = 0; i < n; ++i)
+      ASSERT_NE(mesh.add_face(at(i + 1, 0), at(i, 0), mesh.add_vertex(point(i + 0.5, -1e-13))), Mesh::null_face());
+    ASSERT_TRUE(CR::check_mesh(mesh).is_valid()); // no degenerate face for exact predicates
+
+    const CR::Conformal_flattening f = CR::conformal_flatten(mesh);
+    EXPECT_GE(f.report.flat_sides_shortened, std::size_t(n));
+    expect_embedding(f, 0);
+  }
+}
+
 TEST(ConformalFlatten, WeldedBoundaryCanBeChosen)
 {
   Mesh mesh;

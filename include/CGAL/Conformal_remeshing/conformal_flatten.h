@@ -75,6 +75,9 @@ struct Flattening_report
   /// intrinsic edges split at their midpoints because they were longer than `maximum_edge_length`
   std::size_t edge_splits = 0;
   std::size_t welded_vertices = 0;  ///< vertices of the welded disc (patch, fills, annulus)
+  /// sides shortened by about 1e-14 of their length to open faces that are flat in double
+  /// lengths (CAD slivers whose largest angle is within about 1e-8 of pi; see the manual)
+  std::size_t flat_sides_shortened = 0;
   /// range of the local scale of the map (planar length over surface length) at the input vertices
   double min_scale = 0.;
   double max_scale = 0.;
@@ -439,8 +442,9 @@ Conformal_flattening conformal_flatten(const TriangleMesh& mesh,
     patch.split_long_boundary_edges(welded, patch.loop_length(patch.boundary_loops[welded]) / 32.);
   report.boundary_splits = patch.points.size() - points_before;
 
-  const internal::welding::Welded_disc disc = planar ? internal::welding::unwelded_disc(patch)
-                                                     : internal::welding::weld(patch, welded, inner_radius);
+  internal::welding::Welded_disc disc = planar ? internal::welding::unwelded_disc(patch)
+                                               : internal::welding::weld(patch, welded, inner_radius);
+  report.flat_sides_shortened = internal::welding::open_numerically_flat_faces(disc);
   result.welded_faces = disc.faces;
   result.faces_of_vertex_start.assign(patch.points.size() + 1, 0);
   for(const auto& f : patch.faces)

@@ -17,6 +17,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <limits>
 #include <map>
 #include <numeric>
 #include <unordered_map>
@@ -356,6 +358,64 @@ inline Welded_disc weld(const Indexed_patch& patch, std::size_t welded, double i
   }
   disc.number_of_vertices = std::size_t(next_vertex);
   return disc;
+}
+
+/// Opens the faces of `disc` that its double lengths make flat. A CAD sliver whose largest
+/// angle is within about 1e-8 of pi is a valid triangle in space (exact predicates) but not in
+/// lengths: its longest side rounds to the sum of the other two or more. Such a side is
+/// shortened, in both faces that share it, until the face has a margin of 64 ulps (a relative
+/// change of about 1e-14 of one length: the apex moves by about 1e-7 of the side off the line
+/// through its ends, where the face was already at its rounding floor). A side shortened
+/// this way may flatten the face across it, where it is a shorter side; that face is opened in
+/// turn, at its own longest side, so the chain goes to ever longer edges and ends. Returns the
+/// number of sides shortened; the lengths are left as they are past `4 * faces` of them (the
+/// intrinsic triangulation then says which face is flat).
+inline std::size_t open_numerically_flat_faces(Welded_disc& disc)
+{
+  const double margin = 64. * std::numeric_limits<double>::epsilon();
+  const std::size_t nf = disc.faces.size();
+  auto key = [](int a, int b) { return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b); };
+  // The longest side of face f, if the face lacks the margin; -1 otherwise.
+  auto flat_side = [&](std::size_t f) {
+    const std::array<double, 3>& l = disc.lengths[f];
+    const int c = int(std::max_element(l.begin(), l.end()) - l.begin());
+    const double x = l[c], y = l[(c + 1) % 3], z = l[(c + 2) % 3];
+    return (y + z) - x > margin * x ? -1 : c;
+  };
+  std::vector<std::size_t> flat;
+  for(std::size_t f = 0; f < nf; ++f)
+    if(flat_side(f) >= 0)
+      flat.push_back(f);
+  if(flat.empty())
+    return 0;
+  std::unordered_map<std::uint64_t, std::size_t> side_of; // directed edge -> 3 * face + side
+  side_of.reserve(3 * nf);
+  for(std::size_t f = 0; f < nf; ++f)
+    for(int c = 0; c < 3; ++c)
+      side_of.emplace(key(disc.faces[f][c], disc.faces[f][(c + 1) % 3]), 3 * f + std::size_t(c));
+  std::size_t shortened = 0;
+  while(!flat.empty() && shortened < 4 * nf)
+  {
+    const std::size_t f = flat.back();
+    flat.pop_back();
+    const int c = flat_side(f);
+    if(c < 0)
+      continue;
+    std::array<double, 3>& l = disc.lengths[f];
+    const double x = l[c], opened = (l[(c + 1) % 3] + l[(c + 2) % 3]) - 2. * margin * x;
+    if(!(opened > 0.))
+      continue; // not a sliver: a side of length zero, rejected by the triangulation
+    l[c] = opened;
+    ++shortened;
+    const auto twin = side_of.find(key(disc.faces[f][(c + 1) % 3], disc.faces[f][c]));
+    if(twin != side_of.end())
+    {
+      disc.lengths[twin->second / 3][twin->second % 3] = opened;
+      if(flat_side(twin->second / 3) >= 0)
+        flat.push_back(twin->second / 3);
+    }
+  }
+  return shortened;
 }
 
 } // namespace welding
