@@ -538,11 +538,22 @@ public:
   /// Returns the number of flips.
   std::size_t make_delaunay()
   {
-    std::vector<int> stack;
-    std::vector<char> queued(number_of_edges(), 1);
-    stack.reserve(number_of_edges());
-    for(int e = number_of_edges() - 1; e >= 0; --e)
-      stack.push_back(e);
+    std::vector<int> edges(number_of_edges());
+    for(int e = 0; e < number_of_edges(); ++e)
+      edges[e] = number_of_edges() - 1 - e; // popped from the back: edge 0 first
+    return make_delaunay(edges);
+  }
+
+  /// The same, starting from `edges` only: flips spread from them to the sides of every
+  /// flipped quadrilateral. Enough where the rest is known to be Delaunay, e.g. the link of a
+  /// vertex just inserted by `split_edge()`. Costs what it flips, not the size of the mesh.
+  std::size_t make_delaunay(std::vector<int> edges)
+  {
+    std::vector<int>& stack = edges;
+    if(queued_.size() < edge_he_.size())
+      queued_.resize(edge_he_.size(), 0);
+    for(int e : stack)
+      queued_[e] = 1;
     std::size_t count = 0;
     // Flips terminate in exact arithmetic; with rounding, near-cocircular quads could flip back
     // and forth, so the number of flips is capped far above what converging runs need.
@@ -551,7 +562,7 @@ public:
     {
       const int e = stack.back();
       stack.pop_back();
-      queued[e] = 0;
+      queued_[e] = 0;
       if(is_unflippable(e) || is_border_edge(e) || is_delaunay(e) || !flip(e))
         continue;
       ++count;
@@ -559,13 +570,15 @@ public:
       for(int g : {next(h), prev(h), next(t), prev(t)})
       {
         const int eg = he_edge_[g];
-        if(!queued[eg])
+        if(!queued_[eg])
         {
-          queued[eg] = 1;
+          queued_[eg] = 1;
           stack.push_back(eg);
         }
       }
     }
+    for(int e : stack) // left by the cap
+      queued_[e] = 0;
     return count;
   }
 
@@ -873,6 +886,7 @@ private:
   std::vector<int> he_vertex_, he_twin_, he_edge_, edge_he_;
   std::vector<FT> length_;
   std::vector<char> unflippable_, vertex_on_border_;
+  std::vector<char> queued_; // make_delaunay()'s scratch: all 0 between calls
   std::vector<Flip_record> flips_;
   std::vector<Split_record> splits_;
   std::vector<int> timeline_;                   // event -> flip index, or -1 - split index
