@@ -473,6 +473,24 @@ TEST(ConformalFlatten, BadInputIsRefusedWithTheReason)
 
 // A maximum edge length meant for another scale (1e-4 on a unit tetrahedron: some 10^8 splits)
 // is refused once a million splits have not sufficed, not worked on until memory runs out.
+TEST(ConformalFlatten, LongEdgesAreSplitToTheSurfacesAreaNotToItsFans)
+{
+  // A bent sheet of CAD fans: splitting every long edge of a round at once placed the midpoints
+  // of a fan's edges as close together as its slivers and refined from there (32 times the
+  // splits the area needs on the 87k suspension arm). A triangulation whose edges are at most
+  // L and whose angles are not too small has a few vertices per L^2 of area.
+  bm::Perforated_plate_parameters p;
+  p.number_of_random_holes = 10;
+  Mesh mesh;
+  bm::make_perforated_sheet(mesh, p, 0.3);
+  const double area = CGAL::Polygon_mesh_processing::area(mesh);
+  const double length = std::sqrt(area / 2000.);
+  const CR::Conformal_flattening f = CR::conformal_flatten(mesh, CR::parameters::maximum_edge_length(length));
+  expect_embedding(f, 10);
+  EXPECT_GT(f.report.edge_splits, std::size_t(1000));
+  EXPECT_LT(f.report.edge_splits, std::size_t(4 * 2000)) << "over-refined: " << f.report.edge_splits << " splits";
+}
+
 TEST(ConformalFlatten, AMaximumEdgeLengthFarTooSmallIsRefused)
 {
   Mesh open_tetrahedron;

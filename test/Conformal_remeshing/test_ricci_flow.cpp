@@ -332,6 +332,33 @@ TEST(IntrinsicTriangulation, FlipKeepsCurvatureAndMakesDelaunay)
   EXPECT_NEAR(t.length(e), l[e], 1e-12 * l[e]);
 }
 
+TEST(IntrinsicTriangulation, DelaunayIsRestoredFromTheLinkOfANewVertex)
+{
+  Tri t = from_soup(bad_convex_polygon());
+  t.make_delaunay();
+  // Split the longest interior edges one by one; flips from the new vertex's link alone (the
+  // edges opposite it) must leave the whole triangulation Delaunay, as Lawson's insertion does.
+  std::size_t local_flips = 0;
+  for(int round = 0; round < 20; ++round)
+  {
+    int longest = -1;
+    for(int e = 0; e < t.number_of_edges(); ++e)
+      if(!t.is_border_edge(e) && (longest < 0 || t.length(e) > t.length(longest)))
+        longest = e;
+    const int v = t.split_edge(longest);
+    ASSERT_GE(v, 0);
+    std::vector<int> link;
+    for(int f = 0; f < t.number_of_faces(); ++f)
+      for(int c = 0; c < 3; ++c)
+        if(t.vertex(f, c) == v)
+          link.push_back(t.edge(f, (c + 1) % 3));
+    ASSERT_EQ(link.size(), 4u);
+    local_flips += t.make_delaunay(link);
+    ASSERT_TRUE(t.is_delaunay()) << "after split " << round;
+  }
+  EXPECT_GT(local_flips, 0u); // the restoration had work to do
+}
+
 TEST(IntrinsicTriangulation, SplitAtTheAltitudeFootMakesRightAngles)
 {
   // Two planar triangles on the edge (0, 1) of length 4; the corner at vertex 2 is obtuse and
