@@ -391,13 +391,29 @@ TEST(ConformalFlatten, SliversFlatInDoubleLengthsAreOpened)
         mesh.add_face(at(i, j), at(i + 1, j), at(i + 1, j + 1));
         mesh.add_face(at(i, j), at(i + 1, j + 1), at(i, j + 1));
       }
+    std::vector<Mesh::Vertex_index> apex;
     for(int i = 0; i < n; ++i)
-      ASSERT_NE(mesh.add_face(at(i + 1, 0), at(i, 0), mesh.add_vertex(point(i + 0.5, -1e-13))), Mesh::null_face());
+    {
+      apex.push_back(mesh.add_vertex(point(i + 0.5, -1e-13)));
+      ASSERT_NE(mesh.add_face(at(i + 1, 0), at(i, 0), apex.back()), Mesh::null_face());
+    }
     ASSERT_TRUE(CR::check_mesh(mesh).is_valid()); // no degenerate face for exact predicates
 
     const CR::Conformal_flattening f = CR::conformal_flatten(mesh);
     EXPECT_GE(f.report.flat_sides_shortened, std::size_t(n));
     expect_embedding(f, 0);
+    if(bend == 0.)
+    {
+      // A planar patch is laid out at its own coordinates: each apex stays 1e-13 off the border
+      // line, not the 1e-7 of the opened lengths (which folded CAD slivers of the full-scale
+      // brake disc's flat faces).
+      const K::Vector_2 axis = f.uv[at(n, 0)] - f.uv[at(0, 0)];
+      for(Mesh::Vertex_index v : apex)
+      {
+        const double offset = CGAL::determinant(axis, f.uv[v] - f.uv[at(0, 0)]) / std::sqrt(axis.squared_length());
+        EXPECT_NEAR(offset, -1e-13, 1e-14);
+      }
+    }
   }
 }
 

@@ -622,7 +622,8 @@ Conformal_flattening conformal_flatten(const TriangleMesh& mesh,
       }
     }
   }
-  const std::vector<Intrinsic_triangulation<double>::Point_2> positions = tri.layout();
+  const std::vector<Intrinsic_triangulation<double>::Point_2> positions = planar ? internal::welding::planar_coordinates(patch)
+                                                                                  : tri.layout();
   time_limit.check("after the layout");
   result.layout.reserve(positions.size());
   for(const auto& p : positions)

@@ -204,42 +204,77 @@ struct Welded_disc
   double scale = 1.;                           // welded length = 3D length * scale
 };
 
+inline double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
+inline Vec3 cross(const Vec3& a, const Vec3& b)
+{
+  return {{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}};
+}
+inline Vec3 face_normal(const Indexed_patch& patch, const std::array<int, 3>& f) // twice the area
+{
+  return cross(patch.points[f[1]] - patch.points[f[0]], patch.points[f[2]] - patch.points[f[0]]);
+}
+
+/// The normal of the largest face of `patch` (of length twice its area).
+inline Vec3 largest_face_normal(const Indexed_patch& patch)
+{
+  Vec3 normal{{0., 0., 0.}};
+  for(const auto& f : patch.faces)
+  {
+    const Vec3 n = face_normal(patch, f);
+    if(dot(n, n) > dot(normal, normal))
+      normal = n;
+  }
+  return normal;
+}
+
 /// `true` if every point of `patch` lies within `1e-9` of its diagonal from the plane of its
 /// largest face and every face faces the same way (a planar CAD face, or a single triangle).
 inline bool is_planar(const Indexed_patch& patch)
 {
-  auto cross = [](const Vec3& a, const Vec3& b) { return Vec3{{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]}}; };
-  auto minus = [](const Vec3& a, const Vec3& b) { return Vec3{{a[0] - b[0], a[1] - b[1], a[2] - b[2]}}; };
-  auto dot = [](const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; };
-  Vec3 normal{{0., 0., 0.}}, low = patch.points.front(), high = patch.points.front();
-  double largest = -1.;
-  for(const auto& f : patch.faces)
-  {
-    const Vec3 n = cross(minus(patch.points[f[1]], patch.points[f[0]]), minus(patch.points[f[2]], patch.points[f[0]]));
-    if(dot(n, n) > largest)
-    {
-      largest = dot(n, n);
-      normal = n;
-    }
-  }
+  const Vec3 normal = largest_face_normal(patch);
+  Vec3 low = patch.points.front(), high = patch.points.front();
   for(const Vec3& p : patch.points)
     for(int k = 0; k < 3; ++k)
     {
       low[k] = (std::min)(low[k], p[k]);
       high[k] = (std::max)(high[k], p[k]);
     }
-  const double diagonal = std::sqrt(dot(minus(high, low), minus(high, low)));
-  if(!(largest > 0.))
+  const double diagonal = distance(high, low);
+  if(!(dot(normal, normal) > 0.))
     return false;
-  const double unit = std::sqrt(largest);
+  const double unit = norm(normal);
   const Vec3& origin = patch.points[patch.faces.front()[0]];
   for(const Vec3& p : patch.points)
-    if(std::abs(dot(minus(p, origin), normal)) / unit > 1e-9 * diagonal)
+    if(std::abs(dot(p - origin, normal)) / unit > 1e-9 * diagonal)
       return false;
   for(const auto& f : patch.faces)
-    if(dot(cross(minus(patch.points[f[1]], patch.points[f[0]]), minus(patch.points[f[2]], patch.points[f[0]])), normal) <= 0.)
+    if(dot(face_normal(patch, f), normal) <= 0.)
       return false;
   return true;
+}
+
+/// The points of a planar patch (`is_planar()`) in an orthonormal frame of its plane, turned
+/// so that its faces are counterclockwise. Its layout: the lengths of the intrinsic
+/// triangulation give the same up to rounding, but laying out a CAD sliver from its lengths
+/// (angles of 1e-7 and less) can fold it, where these coordinates keep it as it is in space.
+inline std::vector<std::array<double, 2> > planar_coordinates(const Indexed_patch& patch)
+{
+  const Vec3 normal = largest_face_normal(patch);
+  const Vec3 n{{normal[0] / norm(normal), normal[1] / norm(normal), normal[2] / norm(normal)}};
+  // The frame of `Intrinsic_triangulation::layout()`: the first face's corner 0 at the origin,
+  // its corner 1 on the first axis (projected on the plane).
+  const Vec3& origin = patch.points[patch.faces.front()[0]];
+  Vec3 e1 = patch.points[patch.faces.front()[1]] - origin;
+  const double along_n = dot(e1, n);
+  e1 = {{e1[0] - along_n * n[0], e1[1] - along_n * n[1], e1[2] - along_n * n[2]}};
+  const double l1 = norm(e1);
+  e1 = {{e1[0] / l1, e1[1] / l1, e1[2] / l1}};
+  const Vec3 e2 = cross(n, e1); // (e1, e2, n) is right-handed: counterclockwise seen from n
+  std::vector<std::array<double, 2> > uv;
+  uv.reserve(patch.points.size());
+  for(const Vec3& p : patch.points)
+    uv.push_back({{dot(p - origin, e1), dot(p - origin, e2)}});
+  return uv;
 }
 
 /// The patch itself as the "welded disc" of a planar patch: no annulus, no fill, no seam.
