@@ -4,7 +4,7 @@
 //   PREFIX_checkerboard.svg the patch's planar domain with a checkerboard drawn in the plane
 //   PREFIX.obj/.mtl + PREFIX_checker.png   the input mesh with uv and a checkerboard texture
 //   PREFIX_textured.png     a software rendering of that textured mesh
-//   PREFIX_report.json      what happened (iterations, curvature error, scale range, checks)
+//   PREFIX_report.json      what happened (iterations, curvature error, scale range, checks, CAD slivers opened)
 //
 // Exit codes: 0 success, 1 the input is not a valid patch or the flattening failed (not
 // converged, or not an embedding), 2 the tool could not run.
@@ -48,6 +48,7 @@ std::string json_report(const std::string& input, const CR::Conformal_flattening
   json.field("input", input).field("status", CR::error_message(r.status)).field("converged", r.converged);
   json.field("iterations", r.iterations).field("curvature_error", r.curvature_error).field("flips", r.flips);
   json.field("boundary_loops", r.boundary_loops).field("holes", f.holes.size()).field("boundary_splits", r.boundary_splits);
+  json.field("edge_splits", r.edge_splits).field("flat_sides_shortened", r.flat_sides_shortened);
   json.field("welded_vertices", r.welded_vertices).field("min_scale", r.min_scale).field("max_scale", r.max_scale);
   json.key("embedding").begin_object().field("is_embedding", r.embedding.is_embedding())
       .field("summary", r.embedding.summary()).field("faces", r.embedding.number_of_faces)
