@@ -284,6 +284,11 @@ inline bool split_long_patch_edges(Intrinsic_triangulation<double>& tri, std::si
     const int h = tri.halfedge(e);
     return tri.length(e) > maximum_length && in_patch[tri.source(h)] && in_patch[tri.target(h)];
   };
+  // A halfedge leaving `v` in a face of edge `e`, or -1 if `e` does not end at `v`.
+  auto leaving = [&](int v, int e) {
+    const int h = tri.halfedge(e);
+    return tri.source(h) == v ? h : (tri.target(h) == v ? Tri::next(h) : -1);
+  };
   // The halfedges leaving `v`, counterclockwise, from either end of its fan on the boundary.
   std::vector<int> around;
   auto outgoing = [&](int v, int start) {
@@ -330,21 +335,16 @@ inline bool split_long_patch_edges(Intrinsic_triangulation<double>& tri, std::si
       in_patch.push_back(1);
       ++splits;
       ++done;
-      // The split keeps the first half in the edge: its halfedge or the next one leaves v.
-      int h = tri.halfedge(top.second);
-      if(tri.source(h) != v)
-        h = Tri::next(h);
-      outgoing(v, h);
+      // The split keeps the first half in the edge, so the edge still ends at v.
+      outgoing(v, leaving(v, top.second));
       std::vector<int> link;
       for(int g : around)
         link.push_back(tri.edge(Tri::next(g)));
       tri.make_delaunay(link);
       // Lawson's flips after an insertion make edges at the new vertex only (the next round's
       // scan finds any other, should rounding flip elsewhere).
-      h = tri.halfedge(top.second);
-      if(tri.source(h) != v)
-        h = tri.opposite(h);
-      if(h < 0 || tri.source(h) != v)
+      const int h = leaving(v, top.second);
+      if(h < 0)
         continue;
       outgoing(v, h);
       for(int g : around)
