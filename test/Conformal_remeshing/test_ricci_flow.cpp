@@ -14,6 +14,8 @@
 
 #include "expect_error.h"
 
+#include <paper_models.h>
+
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -28,6 +30,7 @@
 #include <vector>
 
 namespace CR = CGAL::Conformal_remeshing;
+namespace bm = CGAL::Conformal_remeshing::benchmarks;
 typedef CR::Intrinsic_triangulation<double> Tri;
 typedef std::array<double, 3> P3;
 typedef CGAL::Simple_cartesian<double> K;
@@ -357,6 +360,22 @@ TEST(IntrinsicTriangulation, DelaunayIsRestoredFromTheLinkOfANewVertex)
     ASSERT_TRUE(t.is_delaunay()) << "after split " << round;
   }
   EXPECT_GT(local_flips, 0u); // the restoration had work to do
+}
+
+TEST(IntrinsicTriangulation, SliverFansDoNotFlipInCircles)
+{
+  // A CAD part whose planar faces are fans of slivers with angles down to 1e-6 degrees: their
+  // cotangents are only known to within about their square times the ulp. With a tolerance
+  // blind to that, Lawson's flips went round in circles on this 10k part until the cap (20 per
+  // edge: 602,200 flips), and a second pass flipped 16,304 more.
+  Mesh arm;
+  bm::Paper_model_parameters p;
+  p.target_vertices = 10000;
+  bm::make_suspension_arm(arm, p);
+  Tri t(arm);
+  const std::size_t flips = t.make_delaunay();
+  EXPECT_LT(flips, 2 * std::size_t(t.number_of_edges())) << "flips in circles";
+  EXPECT_LE(t.make_delaunay(), 10u) << "a Delaunay triangulation has nothing left to flip";
 }
 
 TEST(IntrinsicTriangulation, SplitAtTheAltitudeFootMakesRightAngles)

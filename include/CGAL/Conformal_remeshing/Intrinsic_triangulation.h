@@ -283,15 +283,7 @@ public:
 
   /// Cotangent weight of edge `e`: the sum of the cotangents of the angles opposite `e`
   /// (one term on the boundary), paper Eqn. 3.7.
-  FT cotangent_weight(int e) const
-  {
-    FT w(0);
-    const int h = edge_he_[e];
-    for(int g : {h, he_twin_[h]})
-      if(g >= 0)
-        w += internal::ricci_flow::cot_from_half_tangent(half_tangents(face(g))[(g % 3 + 2) % 3]);
-    return w;
-  }
+  FT cotangent_weight(int e) const { return opposite_cotangents(e).sum; }
   /// @}
 
   /// \name Flips
@@ -303,14 +295,20 @@ public:
   int edge(int f, int c) const { return he_edge_[3 * f + c]; }
 
   /// Whether edge `e` is locally Delaunay: its two opposite angles sum to at most pi (paper
-  /// Eqn. 3.3), tested as "sum of cotangents >= -tolerance" with a tolerance of a few hundred
-  /// ulps, so that cocircular quadrilaterals are not flipped back and forth. Boundary edges are
-  /// Delaunay.
+  /// Eqn. 3.3), tested as "sum of cotangents >= -tolerance", so that quadrilaterals cocircular
+  /// up to rounding are not flipped back and forth. The tolerance is a few hundred ulps times
+  /// `1 + cot^2` of each angle: angles computed from rounded lengths are off by some ulps, and
+  /// `d cot = -(1 + cot^2) d angle`, so the cotangents of a CAD sliver's tiny or near-flat
+  /// angles (up to 1e12) are only known to within about their square times the ulp. With a
+  /// fixed tolerance, fans of such slivers flipped in circles until the flip cap (a patch of
+  /// issue #7's 100k suspension arm: stopped at 5.5 million flips, where 4.5 million now reach
+  /// the Delaunay triangulation). Boundary edges are Delaunay.
   bool is_delaunay(int e) const
   {
     if(is_border_edge(e))
       return true;
-    return cotangent_weight(e) >= -delaunay_tolerance();
+    const Cotangents c = opposite_cotangents(e);
+    return c.sum >= -delaunay_tolerance() * c.uncertainty;
   }
 
   /// Whether every flippable edge is locally Delaunay (unflippable edges are not tested).
@@ -766,6 +764,26 @@ private:
   }
 
   static FT delaunay_tolerance() { return FT(256) * std::numeric_limits<FT>::epsilon(); }
+
+  // The cotangents of the angles opposite edge `e` (one on the boundary): their sum, and the
+  // factor by which their rounding error exceeds an angle's (1 + the sum of their squares).
+  struct Cotangents
+  {
+    FT sum, uncertainty;
+  };
+  Cotangents opposite_cotangents(int e) const
+  {
+    Cotangents c{FT(0), FT(1)};
+    const int h = edge_he_[e];
+    for(int g : {h, he_twin_[h]})
+      if(g >= 0)
+      {
+        const FT cot = internal::ricci_flow::cot_from_half_tangent(half_tangents(face(g))[(g % 3 + 2) % 3]);
+        c.sum += cot;
+        c.uncertainty += cot * cot;
+      }
+    return c;
+  }
 
   // Lengths of face f ordered as the sides opposite corners 0, 1, 2.
   std::array<FT, 3> opposite_lengths(int f) const
