@@ -297,6 +297,26 @@ double similarity_error(const std::vector<std::array<double, 2>>& a, const std::
 
 std::vector<double> own_curvatures(const Tri& t) { return t.vertex_curvatures(); }
 
+// 2000 random points of the current triangulation, mapped to the input and back: the same face,
+// barycentric coordinates within 1e-12.
+void expect_correspondence_round_trips(const Tri& t, unsigned seed)
+{
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> U(0., 1.);
+  double worst = 0;
+  for(int i = 0; i < 2000; ++i)
+  {
+    const int f = static_cast<int>(U(rng) * t.number_of_faces()) % t.number_of_faces();
+    double a = U(rng), b = U(rng);
+    if(a + b > 1) { a = 1 - a; b = 1 - b; }
+    const Tri::Face_location p{f, {{1 - a - b, a, b}}};
+    const Tri::Face_location back = t.from_input(t.to_input(p));
+    ASSERT_EQ(back.face, p.face);
+    for(int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(back.coordinates[c] - p.coordinates[c]));
+  }
+  EXPECT_LT(worst, 1e-12);
+}
+
 } // namespace
 
 // ---------------------------------------------------------------------------------------------
@@ -742,20 +762,7 @@ TEST(RicciFlow, BoundarySplitsKeepConvergenceAndCorrespondence)
     EXPECT_EQ(directed.count({b, a}), 0u) << "vertex " << v << " is on an interior input edge";
   }
   // Round trip through flips and splits.
-  std::mt19937 rng(5);
-  std::uniform_real_distribution<double> U(0., 1.);
-  double worst = 0;
-  for(int i = 0; i < 2000; ++i)
-  {
-    const int f = static_cast<int>(U(rng) * t.number_of_faces()) % t.number_of_faces();
-    double a = U(rng), b = U(rng);
-    if(a + b > 1) { a = 1 - a; b = 1 - b; }
-    const Tri::Face_location p{f, {{1 - a - b, a, b}}};
-    const Tri::Face_location back = t.from_input(t.to_input(p));
-    ASSERT_EQ(back.face, p.face);
-    for(int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(back.coordinates[c] - p.coordinates[c]));
-  }
-  EXPECT_LT(worst, 1e-12);
+  expect_correspondence_round_trips(t, 5);
 }
 
 TEST(RicciFlow, ExactConformalPathIsPathIndependent)
@@ -782,20 +789,7 @@ TEST(RicciFlow, ExactConformalPathIsPathIndependent)
   for(const P3& p : s.points) input.push_back({{p[0], p[1]}});
   EXPECT_LT(similarity_error(t.layout(), input), 1e-12);
   // The flips explored along the path were replayed on the triangulation: the correspondence holds.
-  std::mt19937 rng(9);
-  std::uniform_real_distribution<double> U(0., 1.);
-  double worst = 0;
-  for(int i = 0; i < 2000; ++i)
-  {
-    const int f = static_cast<int>(U(rng) * t.number_of_faces()) % t.number_of_faces();
-    double a = U(rng), b = U(rng);
-    if(a + b > 1) { a = 1 - a; b = 1 - b; }
-    const Tri::Face_location p{f, {{1 - a - b, a, b}}};
-    const Tri::Face_location back = t.from_input(t.to_input(p));
-    ASSERT_EQ(back.face, p.face);
-    for(int c = 0; c < 3; ++c) worst = std::max(worst, std::abs(back.coordinates[c] - p.coordinates[c]));
-  }
-  EXPECT_LT(worst, 1e-12);
+  expect_correspondence_round_trips(t, 9);
 }
 
 TEST(RicciFlow, GaussBonnetViolationIsReportedBeforeAnyIteration)
