@@ -398,6 +398,27 @@ TEST(IntrinsicTriangulation, SliverFansDoNotFlipInCircles)
   EXPECT_LE(t.make_delaunay(), 10u) << "a Delaunay triangulation has nothing left to flip";
 }
 
+TEST(IntrinsicTriangulation, SplitOrFlipBetweenFacesSharingTwoEdgesIsRefused)
+{
+  // Two triangles glued along all three sides (a pillow): the faces of any edge share the two
+  // other edges too. A split relinked them into twins that no longer pointed at each other, and
+  // the walk around the new vertex in the flattening's refinement never ended (found by
+  // fuzz_flatten, whose corpus keeps the input: split_between_faces_sharing_two_edges).
+  Tri t(3, {{{0, 1, 2}}, {{2, 1, 0}}}, {{{1., 1., 1.}}, {{1., 1., 1.}}});
+  for(int e = 0; e < t.number_of_edges(); ++e)
+  {
+    EXPECT_EQ(t.split_edge(e), -1) << "edge " << e;
+    EXPECT_FALSE(t.flip(e)) << "edge " << e;
+  }
+  for(int h = 0; h < t.number_of_halfedges(); ++h)
+  {
+    ASSERT_GE(t.opposite(h), 0);
+    EXPECT_EQ(t.opposite(t.opposite(h)), h);
+    EXPECT_EQ(t.source(t.opposite(h)), t.target(h));
+  }
+  EXPECT_EQ(t.number_of_vertices(), 3);
+}
+
 TEST(IntrinsicTriangulation, SplitAtTheAltitudeFootMakesRightAngles)
 {
   // Two planar triangles on the edge (0, 1) of length 4; the corner at vertex 2 is obtuse and

@@ -321,8 +321,8 @@ public:
   }
 
   /// Euclidean flip of edge `e` (see the class documentation). Returns false and changes
-  /// nothing if `e` is on the boundary, unflippable, has the same face on both sides, or its
-  /// quadrilateral is not strictly convex.
+  /// nothing if `e` is on the boundary, unflippable, has the same face on both sides, its faces
+  /// share another edge too, or its quadrilateral is not strictly convex.
   bool flip(int e)
   {
     namespace rf = internal::ricci_flow;
@@ -330,7 +330,7 @@ public:
       return false;
     const int h = edge_he_[e], t = he_twin_[h];
     const int fa = face(h), fb = face(t);
-    if(fa == fb)
+    if(fa == fb || faces_meet_elsewhere(h))
       return false;
     const int hn = next(h), hp = prev(h), tn = next(t), tp = prev(t);
     const int vi = source(h), vj = target(h), vk = source(hp), vl = source(tp);
@@ -406,14 +406,17 @@ public:
   /// the edge, so a split boundary or constrained edge stays a boundary or constrained chain (it
   /// maps into the input edge it came from, or across the input faces the edge crosses). The
   /// halves of an unflippable edge are unflippable. Returns the new vertex, or -1 if a face of
-  /// `e` has the same edge twice or violates the triangle inequality (also after the split, by
-  /// rounding), or if `fraction` leaves no length on one side.
+  /// `e` has the same edge twice, the faces of `e` share another edge too, a face violates the
+  /// triangle inequality (also after the split, by rounding), or `fraction` leaves no length on
+  /// one side.
   int split_edge(int e, const FT& fraction = FT(1) / FT(2))
   {
     namespace rf = internal::ricci_flow;
     const int h = edge_he_[e], t = he_twin_[h];
     const int fa = face(h), fb = t >= 0 ? face(t) : -1;
     if(fa == fb)
+      return -1;
+    if(faces_meet_elsewhere(h))
       return -1;
     std::array<FT, 3> ta, tb;
     if(!rf::half_angle_tangents(opposite_lengths(fa), ta) || (fb >= 0 && !rf::half_angle_tangents(opposite_lengths(fb), tb)))
@@ -764,6 +767,21 @@ private:
   }
 
   static FT delaunay_tolerance() { return FT(256) * std::numeric_limits<FT>::epsilon(); }
+
+  // Whether the faces on the two sides of halfedge `h` also meet along another side (a vertex
+  // of degree 2 between them), or one of them along two of its own sides. flip() and
+  // split_edge() relink the other sides of the two faces assuming they lead to other faces;
+  // here they would leave twins that no longer point at each other, and walks around a vertex
+  // that never end (a fuzzed flattening's refinement filled 2 GB so).
+  bool faces_meet_elsewhere(int h) const
+  {
+    const int t = he_twin_[h];
+    const int fa = face(h), fb = t >= 0 ? face(t) : -1;
+    for(int g : {next(h), prev(h), t >= 0 ? next(t) : -1, t >= 0 ? prev(t) : -1})
+      if(g >= 0 && he_twin_[g] >= 0 && (face(he_twin_[g]) == fa || face(he_twin_[g]) == fb))
+        return true;
+    return false;
+  }
 
   // The cotangents of the angles opposite edge `e` (one on the boundary): their sum, and the
   // factor by which their rounding error exceeds an angle's (1 + the sum of their squares).
