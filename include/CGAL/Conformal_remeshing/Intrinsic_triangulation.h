@@ -414,9 +414,7 @@ public:
     namespace rf = internal::ricci_flow;
     const int h = edge_he_[e], t = he_twin_[h];
     const int fa = face(h), fb = t >= 0 ? face(t) : -1;
-    if(fa == fb)
-      return -1;
-    if(faces_meet_elsewhere(h))
+    if(fa == fb || faces_meet_elsewhere(h))
       return -1;
     std::array<FT, 3> ta, tb;
     if(!rf::half_angle_tangents(opposite_lengths(fa), ta) || (fb >= 0 && !rf::half_angle_tangents(opposite_lengths(fb), tb)))

@@ -33,6 +33,8 @@ namespace welding {
 typedef std::array<double, 3> Vec3;
 
 inline Vec3 operator-(const Vec3& a, const Vec3& b) { return {{a[0] - b[0], a[1] - b[1], a[2] - b[2]}}; }
+inline Vec3 operator*(double s, const Vec3& a) { return {{s * a[0], s * a[1], s * a[2]}}; }
+inline Vec3 operator/(const Vec3& a, double s) { return {{a[0] / s, a[1] / s, a[2] / s}}; }
 inline double norm(const Vec3& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
 inline double distance(const Vec3& a, const Vec3& b) { return norm(a - b); }
 
@@ -260,15 +262,13 @@ inline bool is_planar(const Indexed_patch& patch)
 inline std::vector<std::array<double, 2> > planar_coordinates(const Indexed_patch& patch)
 {
   const Vec3 normal = largest_face_normal(patch);
-  const Vec3 n{{normal[0] / norm(normal), normal[1] / norm(normal), normal[2] / norm(normal)}};
+  const Vec3 n = normal / norm(normal);
   // The frame of `Intrinsic_triangulation::layout()`: the first face's corner 0 at the origin,
   // its corner 1 on the first axis (projected on the plane).
   const Vec3& origin = patch.points[patch.faces.front()[0]];
   Vec3 e1 = patch.points[patch.faces.front()[1]] - origin;
-  const double along_n = dot(e1, n);
-  e1 = {{e1[0] - along_n * n[0], e1[1] - along_n * n[1], e1[2] - along_n * n[2]}};
-  const double l1 = norm(e1);
-  e1 = {{e1[0] / l1, e1[1] / l1, e1[2] / l1}};
+  e1 = e1 - dot(e1, n) * n;
+  e1 = e1 / norm(e1);
   const Vec3 e2 = cross(n, e1); // (e1, e2, n) is right-handed: counterclockwise seen from n
   std::vector<std::array<double, 2> > uv;
   uv.reserve(patch.points.size());
