@@ -194,7 +194,7 @@ void write_library_report(tools::Json_writer& json, const CR::Remeshing_report& 
       .field("dangling_feature_edges", r.dangling_feature_edges).end_object();
   json.key("flattening").begin_object().field("newton_iterations_max", r.max_newton_iterations)
       .field("newton_iterations_total", iterations).field("flips", r.flips)
-      .field("patches_not_converged", not_converged).field("max_curvature_error", r.max_curvature_error)
+      .field("retriangulated_faces", r.retriangulated_faces).field("patches_not_converged", not_converged).field("max_curvature_error", r.max_curvature_error)
       .field("max_scale_ratio", r.max_scale_ratio).field("edge_splits", edge_splits)
       .field("boundary_splits", boundary_splits).field("welded_vertices", welded_vertices).end_object();
   json.key("meshing").begin_object().field("boundary_curves", r.boundary_curves).field("refined_boundary_curves", r.refined_boundary_curves)

@@ -312,7 +312,7 @@ int main(int argc, char** argv)
           .field("split_diagonals", report.split_diagonals).end_object();
       json.key("flattening").begin_object().field("max_iterations", report.max_newton_iterations)
           .field("max_curvature_error", report.max_curvature_error).field("flips", report.flips)
-          .field("max_scale_ratio", report.max_scale_ratio).end_object();
+          .field("retriangulated_faces", report.retriangulated_faces).field("max_scale_ratio", report.max_scale_ratio).end_object();
       json.field("boundary_samples", report.boundary_samples).field("clamped_vertices", report.clamped_vertices)
           .field("optimization_flips", report.optimization_flips);
       json.key("input_quality");

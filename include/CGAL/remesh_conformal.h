@@ -77,6 +77,9 @@ struct Remeshing_report
   int max_newton_iterations = 0;
   double max_curvature_error = 0.;
   std::size_t flips = 0;
+  /// faces of exactly coplanar regions replaced by their constrained Delaunay triangulation
+  /// before the flips (`Flattening_report::retriangulated_faces`, summed)
+  std::size_t retriangulated_faces = 0;
   double max_scale_ratio = 0.; ///< the largest ratio of the local scales in a patch
   std::size_t boundary_curves = 0;
   std::size_t boundary_samples = 0;
@@ -124,7 +127,9 @@ inline std::vector<Epick::Point_3> vertex_surface_points(const Conformal_flatten
     for(int c = 0; c < 3; ++c)
       if(!known[flat.triangles[t][c]])
       {
-        point[flat.triangles[t][c]] = flat.corner_to_surface(t, c).point;
+        std::array<double, 3> b{{0., 0., 0.}};
+        b[c] = 1.;
+        point[flat.triangles[t][c]] = flat.surface_point(t, b);
         known[flat.triangles[t][c]] = 1;
       }
   return point;
@@ -296,7 +301,7 @@ inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, c
   {
     const auto lift = [&](const Epick::Point_2& p) {
       const Planar_locator::Location l = locator.locate(p);
-      return flat.to_surface(l.triangle, l.coordinates).point;
+      return flat.surface_point(l.triangle, l.coordinates);
     };
     std::vector<Epick::Point_3> positions;
     positions.reserve(planar.points.size());
@@ -658,6 +663,7 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
     report.max_newton_iterations = (std::max)(report.max_newton_iterations, r.iterations);
     report.max_curvature_error = (std::max)(report.max_curvature_error, r.curvature_error);
     report.flips += r.flips;
+    report.retriangulated_faces += r.retriangulated_faces;
     report.max_scale_ratio = (std::max)(report.max_scale_ratio, r.max_scale / r.min_scale);
     report.seconds_ricci_flow += r.seconds_flow;
     report.patches.push_back(r);

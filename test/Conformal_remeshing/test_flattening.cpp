@@ -5,6 +5,7 @@
 #include <CGAL/Conformal_remeshing/conformal_flatten.h>
 
 #include "cad_like_models.h"
+#include "paper_models.h"
 #include "test_surfaces.h"
 #include "expect_error.h"
 
@@ -519,4 +520,89 @@ TEST(ConformalFlatten, AMaximumEdgeLengthFarTooSmallIsRefused)
   // A sensible length is accepted.
   EXPECT_EQ(CR::conformal_flatten(open_tetrahedron, CR::parameters::maximum_edge_length(0.1)).report.status,
             CR::Error_code::SUCCESS);
+}
+
+namespace {
+// A point of `mesh` given by an input face and barycentric coordinates.
+K::Point_3 input_point(const Mesh& mesh, std::size_t face, const std::array<double, 3>& b)
+{
+  const auto h = mesh.halfedge(Mesh::Face_index(Mesh::size_type(face)));
+  return CGAL::barycenter(mesh.point(mesh.source(h)), b[0], mesh.point(mesh.target(h)), b[1],
+                          mesh.point(mesh.target(mesh.next(h))), b[2]);
+}
+} // namespace
+
+TEST(ConformalFlatten, CoplanarFansAreRetriangulatedAndPointsLocatedInTheirInputFaces)
+{
+  // A disc of 800 slivers fanned from one boundary vertex, bent up away from the apex: the
+  // faces left in the plane are one coplanar region of about 500 slivers, which its constrained
+  // Delaunay triangulation replaces (the flips saved are measured on a CAD part below).
+  Mesh mesh;
+  bm::make_sliver_fan_disc(mesh, 800);
+  for(auto v : mesh.vertices())
+  {
+    const double x = -mesh.point(v).x(), y = mesh.point(v).y(); // apex at (-1, 0)
+    mesh.point(v) = K::Point_3(x, y, x > 0.3 ? (x - 0.3) * (x - 0.3) : 0.);
+  }
+  const CR::Conformal_flattening f = CR::conformal_flatten(mesh);
+  expect_embedding(f, 0);
+  EXPECT_GT(f.report.retriangulated_faces, std::size_t(400));
+  EXPECT_LT(f.report.retriangulated_faces, num_faces(mesh));
+  // Every surface point through the map lies in the input face it is located in: points in
+  // every flat triangle, and the domain's boundary points.
+  CGAL::Random random(7);
+  std::size_t checked = 0;
+  for(std::size_t t = 0; t < f.triangles.size(); ++t)
+    for(int k = 0; k < 4; ++k)
+    {
+      const double u = random.get_double(), w = random.get_double() * (1. - u);
+      const std::array<double, 3> b = k == 0 ? std::array<double, 3>{{1., 0., 0.}} : std::array<double, 3>{{u, w, 1. - u - w}};
+      const CR::Domain_point q = f.to_surface(t, b);
+      ASSERT_LT(q.input_face, num_faces(mesh));
+      for(double c : q.input_coordinates)
+        EXPECT_GE(c, -1e-12);
+      EXPECT_LT(std::sqrt(CGAL::squared_distance(input_point(mesh, q.input_face, q.input_coordinates), q.point)), 1e-12)
+        << "triangle " << t;
+      ++checked;
+    }
+  for(const CR::Domain_point& q : f.outer_boundary)
+    EXPECT_LT(std::sqrt(CGAL::squared_distance(input_point(mesh, q.input_face, q.input_coordinates), q.point)), 1e-12);
+  EXPECT_GT(checked, std::size_t(3000));
+}
+
+TEST(ConformalFlatten, CoplanarRegionsOfACadPartNeedFewFlips)
+{
+  // The 10k suspension arm: its planar faces are fans whose Delaunay flips are most of the
+  // flattening's time at scale (issue #7: 92 million at 316k vertices).
+  Mesh arm;
+  bm::Paper_model_parameters p;
+  p.target_vertices = 10000;
+  bm::make_suspension_arm(arm, p);
+  CR::internal::welding::Indexed_patch patch =
+    CR::internal::welding::make_indexed_patch(arm, get(CGAL::vertex_point, arm), get(CGAL::vertex_index, arm), get(CGAL::face_index, arm));
+  auto flips = [&] {
+    std::vector<std::array<double, 3> > lengths;
+    for(const auto& f : patch.faces)
+      lengths.push_back({{CR::internal::welding::distance(patch.points[f[0]], patch.points[f[1]]),
+                          CR::internal::welding::distance(patch.points[f[1]], patch.points[f[2]]),
+                          CR::internal::welding::distance(patch.points[f[2]], patch.points[f[0]])}});
+    return CR::Intrinsic_triangulation<double>(int(patch.points.size()), patch.faces, lengths).make_delaunay();
+  };
+  const std::size_t before = flips();
+  const std::size_t replaced = CR::internal::welding::retriangulate_coplanar_regions(patch);
+  EXPECT_GT(replaced, num_faces(arm) / 10);
+  EXPECT_EQ(patch.faces.size(), num_faces(arm));
+  const std::size_t after = flips();
+  EXPECT_LT(10 * after, before) << "flips before: " << before << ", after: " << after;
+  // Each new face's centroid lies in the input face it is located in, at those coordinates.
+  for(std::size_t f = 0; f < patch.faces.size(); ++f)
+  {
+    const std::array<double, 3> centroid{{1. / 3, 1. / 3, 1. / 3}};
+    const auto location = patch.input_location(int(f), centroid);
+    const CR::internal::welding::Vec3 x = patch.point_in_face(int(f), centroid);
+    const auto h = arm.halfedge(Mesh::Face_index(Mesh::size_type(location.first)));
+    const K::Point_3 y = CGAL::barycenter(arm.point(arm.source(h)), location.second[0], arm.point(arm.target(h)), location.second[1],
+                                          arm.point(arm.target(arm.next(h))), location.second[2]);
+    ASSERT_LT(std::sqrt(CGAL::squared_distance(y, K::Point_3(x[0], x[1], x[2]))), 1e-9) << "face " << f;
+  }
 }

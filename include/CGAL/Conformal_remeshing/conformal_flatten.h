@@ -14,6 +14,7 @@
 #include <CGAL/Conformal_remeshing/discrete_ricci_flow.h>
 #include <CGAL/Conformal_remeshing/internal/named_parameters.h>
 #include <CGAL/Conformal_remeshing/internal/time_limit.h>
+#include <CGAL/Conformal_remeshing/internal/welding/retriangulate_coplanar_regions.h>
 #include <CGAL/Conformal_remeshing/internal/welding/weld.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -75,6 +76,9 @@ struct Flattening_report
   std::size_t boundary_splits = 0;
   /// intrinsic edges split at their midpoints because they were longer than `maximum_edge_length`
   std::size_t edge_splits = 0;
+  /// faces of exactly coplanar regions replaced by their constrained Delaunay triangulation
+  /// before the flips (a CAD fan of slivers needs a number of flips quadratic in its size)
+  std::size_t retriangulated_faces = 0;
   std::size_t welded_vertices = 0;  ///< vertices of the welded disc (patch, fills, annulus)
   /// sides shortened by about 1e-14 of their length to open faces that are flat in double
   /// lengths (CAD slivers whose largest angle is within about 1e-8 of pi; see the manual)
@@ -135,9 +139,7 @@ struct Conformal_flattening
   /// barycentric coordinates there, through the bijective correspondence of the flow.
   Domain_point to_surface(std::size_t t, const std::array<double, 3>& b) const
   {
-    typedef Intrinsic_triangulation<double>::Face_location Location;
-    const Location initial = triangulation.to_input(Location{triangle_face[t], {{b[0], b[1], b[2]}}});
-    std::pair<int, std::array<double, 3> > on_patch = patch_location(initial.face, {{initial.coordinates[0], initial.coordinates[1], initial.coordinates[2]}});
+    const std::pair<int, std::array<double, 3> > on_patch = patch_location_of_triangle(t, b);
     Domain_point p;
     p.uv = Epick::Point_2(b[0] * layout[triangles[t][0]].x() + b[1] * layout[triangles[t][1]].x() + b[2] * layout[triangles[t][2]].x(),
                           b[0] * layout[triangles[t][0]].y() + b[1] * layout[triangles[t][1]].y() + b[2] * layout[triangles[t][2]].y());
@@ -147,6 +149,15 @@ struct Conformal_flattening
     p.input_face = std::size_t(location.first);
     p.input_coordinates = location.second;
     return p;
+  }
+
+  /// The surface point of `to_surface(t, b)` alone, without locating it in an input face (which
+  /// takes a walk in a retriangulated coplanar region).
+  Epick::Point_3 surface_point(std::size_t t, const std::array<double, 3>& b) const
+  {
+    const std::pair<int, std::array<double, 3> > on_patch = patch_location_of_triangle(t, b);
+    const internal::welding::Vec3 x = patch.point_in_face(on_patch.first, on_patch.second);
+    return Epick::Point_3(x[0], x[1], x[2]);
   }
 
   /// The surface point at corner `c` of `triangles[t]`: the image of that vertex.
@@ -167,6 +178,14 @@ struct Conformal_flattening
   std::vector<int> faces_of_vertex_start, faces_of_vertex;
 
 private:
+  // The patch face and barycentric coordinates there of the point at `b` in `triangles[t]`.
+  std::pair<int, std::array<double, 3> > patch_location_of_triangle(std::size_t t, const std::array<double, 3>& b) const
+  {
+    typedef Intrinsic_triangulation<double>::Face_location Location;
+    const Location initial = triangulation.to_input(Location{triangle_face[t], {{b[0], b[1], b[2]}}});
+    return patch_location(initial.face, {{initial.coordinates[0], initial.coordinates[1], initial.coordinates[2]}});
+  }
+
   // A location in a face of the welded disc, as a location in a patch face. A point of the patch
   // that lies on a seam (a boundary or hole loop) may come back from the correspondence in the
   // annulus or hole fill beside it, with weight only on seam vertices: it is moved across.
@@ -494,7 +513,11 @@ Conformal_flattening conformal_flatten(const TriangleMesh& mesh,
   const std::size_t points_before = patch.points.size();
   const double maximum_length = choose_parameter(get_parameter(np, internal_np::maximum_edge_length), 0.);
   if(!planar)
+  {
     patch.split_long_boundary_edges(welded, patch.loop_length(patch.boundary_loops[welded]) / 32.);
+    // (A planar patch is not flipped: its own triangles are laid out.)
+    report.retriangulated_faces = internal::welding::retriangulate_coplanar_regions(patch);
+  }
   report.boundary_splits = patch.points.size() - points_before;
 
   internal::welding::Welded_disc disc = planar ? internal::welding::unwelded_disc(patch)

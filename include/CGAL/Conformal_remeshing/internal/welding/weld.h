@@ -10,6 +10,7 @@
 
 #include <CGAL/Conformal_remeshing/Error.h>
 #include <CGAL/Conformal_remeshing/internal/welding/annulus.h>
+#include <CGAL/Conformal_remeshing/internal/welding/coplanar_region.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -39,15 +40,18 @@ inline double norm(const Vec3& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] +
 inline double distance(const Vec3& a, const Vec3& b) { return norm(a - b); }
 
 /// A copy of the patch as indices, which welding may refine: boundary edges are split at their
-/// midpoints, exactly on the input edge. Every face remembers the input face it lies in and the
-/// barycentric coordinates of its corners there, so that points map back to the input exactly.
+/// midpoints, exactly on the input edge, and coplanar regions retriangulated
+/// (retriangulate_coplanar_regions.h). Every face remembers the input face it lies in and the
+/// barycentric coordinates of its corners there, or the coplanar region it lies in, so that
+/// points map back to the input exactly.
 struct Indexed_patch
 {
   std::vector<Vec3> points;                         // input vertices first, then split points
   std::size_t number_of_input_vertices = 0;
   std::vector<std::array<int, 3> > faces;           // counterclockwise
-  std::vector<int> input_face;                      // the input face each face lies in
+  std::vector<int> input_face;                      // the input face each face lies in, or -1 - region
   std::vector<std::array<Vec3, 3> > input_coordinates; // barycentric coordinates of the corners there
+  std::vector<Coplanar_region> coplanar_regions;
   /// Boundary loops as vertex cycles in the order of the border halfedges: the missing face of
   /// the edge (loop[i], loop[i+1]) lies on its left.
   std::vector<std::vector<int> > boundary_loops;
@@ -73,11 +77,11 @@ struct Indexed_patch
   /// The input face and barycentric coordinates of the point at `b` in face `f`.
   std::pair<int, std::array<double, 3> > input_location(int f, const std::array<double, 3>& b) const
   {
-    std::array<double, 3> q{{0., 0., 0.}};
-    for(int c = 0; c < 3; ++c)
-      for(int k = 0; k < 3; ++k)
-        q[k] += b[c] * input_coordinates[f][c][k];
-    return {input_face[f], q};
+    if(input_face[f] >= 0)
+      return {input_face[f], interpolate(input_coordinates[f], b)};
+    const Coplanar_region& region = coplanar_regions[std::size_t(-1 - input_face[f])];
+    const std::pair<int, std::array<double, 3> > old = region.locate(faces[f], b);
+    return {region.input_face[old.first], interpolate(region.input_coordinates[old.first], old.second)};
   }
 
   /// Splits the edges of boundary loop `loop_index` longer than `max_length` at their
@@ -93,6 +97,15 @@ struct Indexed_patch
   }
 
 private:
+  static std::array<double, 3> interpolate(const std::array<Vec3, 3>& corners, const std::array<double, 3>& b)
+  {
+    std::array<double, 3> q{{0., 0., 0.}};
+    for(int c = 0; c < 3; ++c)
+      for(int k = 0; k < 3; ++k)
+        q[k] += b[c] * corners[c][k];
+    return q;
+  }
+
   typedef std::map<std::pair<int, int>, int> Edge_faces; // directed edge -> the face holding it
 
   Edge_faces directed_edge_faces() const
