@@ -387,7 +387,10 @@ inline bool split_long_patch_edges(Intrinsic_triangulation<double>& tri, std::si
 /// vertices of the inner circle). The flat disc is laid out; a locally injective map of a disc
 /// with a convex boundary is an embedding, so the patch region is embedded, which is then
 /// verified with exact predicates. Welded loop edges longer than 1/32 of the loop are split at
-/// their midpoints first (exactly on the input edges).
+/// their midpoints first (exactly on the input edges), and every edge-connected set of at least
+/// 16 exactly coplanar faces (a CAD fan of slivers) is replaced by its constrained Delaunay
+/// triangulation, whose Delaunay flips do not grow with the square of the fan; points in such a
+/// region are still located in their input faces (`Flattening_report::retriangulated_faces`).
 ///
 /// \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
 ///
