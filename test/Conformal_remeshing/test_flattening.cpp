@@ -606,3 +606,67 @@ TEST(ConformalFlatten, CoplanarRegionsOfACadPartNeedFewFlips)
     ASSERT_LT(std::sqrt(CGAL::squared_distance(y, K::Point_3(x[0], x[1], x[2]))), 1e-9) << "face " << f;
   }
 }
+
+TEST(ConformalFlatten, HolesFilledByTheirPolygonMapBackContinuously)
+{
+  // The side wall of a plate with a rounded rectangular outline: a band whose bottom loop is
+  // filled by the triangulation of its polygon (its straight sides make a cone's fan
+  // non-Delaunay), with chords across the whole outline. A point of
+  // the wall next to the seam can come back from the correspondence in a fill face with a
+  // rounding weight on a far loop vertex: it was once moved there (81 units away on the default
+  // plate's wall), and the refinement split the fill's chords as if they were the patch's.
+  Mesh band;
+  const double width = 100., depth = 80., radius = 10., height = 6.;
+  std::vector<std::pair<double, double> > outline;
+  const int per_corner = 16, per_side = 12;
+  const double cx[4] = {width / 2 - radius, -width / 2 + radius, -width / 2 + radius, width / 2 - radius};
+  const double cy[4] = {depth / 2 - radius, depth / 2 - radius, -depth / 2 + radius, -depth / 2 + radius};
+  for(int corner = 0; corner < 4; ++corner)
+  {
+    for(int k = 0; k <= per_corner; ++k)
+    {
+      const double a = CGAL_PI / 2 * (corner + double(k) / per_corner);
+      outline.emplace_back(cx[corner] + radius * std::cos(a), cy[corner] + radius * std::sin(a));
+    }
+    const int next = (corner + 1) % 4;
+    const double a = CGAL_PI / 2 * (corner + 1);
+    for(int k = 1; k < per_side; ++k) // the straight side to the next corner
+    {
+      const double s = double(k) / per_side;
+      outline.emplace_back((1 - s) * (cx[corner] + radius * std::cos(a)) + s * (cx[next] + radius * std::cos(a)),
+                           (1 - s) * (cy[corner] + radius * std::sin(a)) + s * (cy[next] + radius * std::sin(a)));
+    }
+  }
+  std::vector<Mesh::Vertex_index> bottom, top;
+  for(const auto& p : outline)
+    bottom.push_back(band.add_vertex(K::Point_3(p.first, p.second, 0.)));
+  for(const auto& p : outline)
+    top.push_back(band.add_vertex(K::Point_3(p.first, p.second, height)));
+  const std::size_t n = outline.size();
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const std::size_t j = (i + 1) % n;
+    ASSERT_NE(band.add_face(bottom[i], bottom[j], top[j]), Mesh::null_face());
+    ASSERT_NE(band.add_face(bottom[i], top[j], top[i]), Mesh::null_face());
+  }
+  const CR::Conformal_flattening f = CR::conformal_flatten(band, CR::parameters::maximum_edge_length(2.8));
+  expect_embedding(f, 1);
+  EXPECT_GT(f.report.edge_splits, std::size_t(100));
+  // The refinement resolves the wall, not the fill: the wall's area at that length.
+  EXPECT_LT(f.report.edge_splits, std::size_t(4 * (2 * (width + depth) * height) / (2.8 * 2.8)));
+  CGAL::Random random(3);
+  for(std::size_t t = 0; t < f.triangles.size(); ++t)
+  {
+    std::array<K::Point_3, 3> corner;
+    double longest = 0.;
+    for(int c = 0; c < 3; ++c)
+      corner[c] = f.corner_to_surface(t, c).point;
+    for(int c = 0; c < 3; ++c)
+      longest = (std::max)(longest, std::sqrt(CGAL::squared_distance(corner[c], corner[(c + 1) % 3])));
+    const double u = random.get_double(), w = random.get_double() * (1. - u);
+    const CR::Domain_point q = f.to_surface(t, {{u, w, 1. - u - w}});
+    for(int c = 0; c < 3; ++c)
+      ASSERT_LE(std::sqrt(CGAL::squared_distance(q.point, corner[c])), longest + 1e-9) << "triangle " << t;
+    EXPECT_LT(std::sqrt(CGAL::squared_distance(input_point(band, q.input_face, q.input_coordinates), q.point)), 1e-9);
+  }
+}

@@ -204,9 +204,12 @@ private:
     }
     std::array<double, 3> result{{0., 0., 0.}};
     int best_face = -1, best_shared = 0;
-    int anchor = -1; // a seam vertex with weight: the patch face sought is one of its faces
-    for(int c = 0; c < 3 && anchor < 0; ++c)
-      if(b[c] > 0.)
+    // The seam vertex with the most weight: the patch face sought is one of its faces. (Not just
+    // any vertex with weight: a face of a hole's fill may have a third seam vertex far away,
+    // with a weight of rounding.)
+    int anchor = -1;
+    for(int c = 0; c < 3; ++c)
+      if(b[c] > 0. && (anchor < 0 || b[c] > b[std::find(corners.begin(), corners.end(), anchor) - corners.begin()]))
         anchor = corners[c];
     for(int k = (anchor < 0 ? 0 : faces_of_vertex_start[anchor]); anchor >= 0 && k < faces_of_vertex_start[anchor + 1]; ++k)
     {
@@ -222,10 +225,18 @@ private:
     }
     if(best_face < 0 || kept <= 0.)
       throw Error(Error_code::NOT_AN_EMBEDDING, "conformal_flatten: a point of the patch maps outside it (internal error)");
+    // (A hole filled by a triangulation of its loop has faces with three seam vertices: the
+    // weight of one that the patch face lacks is dropped too.)
+    double matched = 0.;
     for(int c = 0; c < 3; ++c)
       for(int d = 0; d < 3; ++d)
         if(patch.faces[best_face][d] == corners[c])
-          result[d] += b[c] / kept;
+        {
+          result[d] += b[c];
+          matched += b[c];
+        }
+    for(double& x : result)
+      x /= matched;
     return {best_face, result};
   }
 };
@@ -281,8 +292,8 @@ inline std::vector<std::vector<int> > region_boundary_loops(const Intrinsic_tria
   return loops;
 }
 
-// Splits the edges of the patch region of `tri` (between vertices below `patch_vertices`, or
-// added by these splits) longer than `maximum_length` at their midpoints, in the intrinsic
+// Splits the edges of the patch region of `tri` (edges of its first `patch_faces` faces, and of
+// the faces that flips and these splits make of them) longer than `maximum_length` at their midpoints, in the intrinsic
 // Delaunay triangulation, until none is left, so that the conformal factor is resolved at that
 // length everywhere. Splitting on the input instead keeps a long CAD sliver a fan of slivers,
 // which the flow's first flips then undo: 22.7 million flips and 0.4 million splits for the 134k
@@ -293,15 +304,17 @@ inline std::vector<std::vector<int> > region_boundary_loops(const Intrinsic_tria
 // area at that length; the 338k chassis: 742k in one patch). Counts the splits in `splits`;
 // false past `split_limit` of them (a length far below the mesh's edges would split without end
 // in sight).
-inline bool split_long_patch_edges(Intrinsic_triangulation<double>& tri, std::size_t patch_vertices,
+inline bool split_long_patch_edges(Intrinsic_triangulation<double>& tri, std::size_t patch_faces,
                                    double maximum_length, std::size_t split_limit, std::size_t& splits)
 {
   typedef Intrinsic_triangulation<double> Tri;
-  std::vector<char> in_patch(tri.number_of_vertices(), 0);
-  std::fill(in_patch.begin(), in_patch.begin() + std::ptrdiff_t((std::min)(patch_vertices, in_patch.size())), 1);
+  // Flips keep a face in its region (they never cross a seam); a split face's new half is
+  // appended, in the region of the face it comes from.
+  std::vector<char> in_patch(tri.number_of_faces(), 0);
+  std::fill(in_patch.begin(), in_patch.begin() + std::ptrdiff_t((std::min)(patch_faces, in_patch.size())), 1);
   auto is_long = [&](int e) {
-    const int h = tri.halfedge(e);
-    return tri.length(e) > maximum_length && in_patch[tri.source(h)] && in_patch[tri.target(h)];
+    const int h = tri.halfedge(e), t = tri.opposite(h);
+    return tri.length(e) > maximum_length && (in_patch[Tri::face(h)] || (t >= 0 && in_patch[Tri::face(t)]));
   };
   // A halfedge leaving `v` in a face of edge `e`, or -1 if `e` does not end at `v`.
   auto leaving = [&](int v, int e) {
@@ -348,10 +361,14 @@ inline bool split_long_patch_edges(Intrinsic_triangulation<double>& tri, std::si
         continue; // flipped since it was queued
       if(splits >= split_limit)
         return false;
+      const int h = tri.halfedge(top.second), t = tri.opposite(h);
+      const char region_a = in_patch[Tri::face(h)], region_b = t >= 0 ? in_patch[Tri::face(t)] : 0;
       const int v = tri.split_edge(top.second);
       if(v < 0) // refused by rounding: a sliver too thin to split
         continue;
-      in_patch.push_back(1);
+      in_patch.push_back(region_a); // the new faces: the one from h's face, then the one from t's
+      if(t >= 0)
+        in_patch.push_back(region_b);
       ++splits;
       ++done;
       // The split keeps the first half in the edge, so the edge still ends at v.
@@ -362,10 +379,10 @@ inline bool split_long_patch_edges(Intrinsic_triangulation<double>& tri, std::si
       tri.make_delaunay(link);
       // Lawson's flips after an insertion make edges at the new vertex only (the next round's
       // scan finds any other, should rounding flip elsewhere).
-      const int h = leaving(v, top.second);
-      if(h < 0)
+      const int out = leaving(v, top.second);
+      if(out < 0)
         continue;
-      outgoing(v, h);
+      outgoing(v, out);
       for(int g : around)
         if(is_long(tri.edge(g)))
           longest.emplace(tri.length(tri.edge(g)), tri.edge(g));
@@ -382,7 +399,8 @@ inline bool split_long_patch_edges(Intrinsic_triangulation<double>& tri, std::si
 /// conformally and with no overlap anywhere (paper Sec. 4.1-4.4).
 ///
 /// One boundary loop (the longest by default) is welded to a planar annulus, every other loop
-/// is filled with a cone vertex, and the discrete Ricci flow makes the welded disc flat with
+/// is filled (with a cone vertex, or by the constrained Delaunay triangulation of its polygon
+/// seen along its normal where the cone's fan is not Delaunay), and the discrete Ricci flow makes the welded disc flat with
 /// the annulus' inner circle as a convex boundary (targets: 0 at every vertex, 2&pi;/n at the n
 /// vertices of the inner circle). The flat disc is laid out; a locally injective map of a disc
 /// with a convex boundary is an embedding, so the patch region is embedded, which is then
@@ -555,7 +573,7 @@ Conformal_flattening conformal_flatten(const TriangleMesh& mesh,
   const Clock::time_point refinement_start = Clock::now();
   const std::size_t split_limit = (std::max)(std::size_t(1000000), 20 * patch.points.size());
   if(maximum_length > 0. && !planar &&
-     !internal::split_long_patch_edges(tri, patch.points.size(), disc.scale * maximum_length, split_limit, report.edge_splits))
+     !internal::split_long_patch_edges(tri, disc.patch_faces, disc.scale * maximum_length, split_limit, report.edge_splits))
   {
     std::ostringstream os;
     os << "conformal_flatten: a maximum_edge_length of " << maximum_length << " needs more than " << split_limit

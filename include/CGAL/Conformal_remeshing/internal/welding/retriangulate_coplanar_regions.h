@@ -11,6 +11,7 @@
 #ifndef CGAL_CONFORMAL_REMESHING_INTERNAL_WELDING_RETRIANGULATE_COPLANAR_REGIONS_H
 #define CGAL_CONFORMAL_REMESHING_INTERNAL_WELDING_RETRIANGULATE_COPLANAR_REGIONS_H
 
+#include <CGAL/Conformal_remeshing/internal/welding/constrained_domain.h>
 #include <CGAL/Conformal_remeshing/internal/welding/coplanar_region.h>
 #include <CGAL/Conformal_remeshing/internal/welding/weld.h>
 
@@ -124,7 +125,7 @@ inline std::size_t retriangulate_coplanar_regions(Indexed_patch& patch, std::siz
     // Drop the coordinate of the normal's largest component (exact: the projection is a bijection
     // on the plane when the seed's projection is not flat, which is checked exactly).
     const Vec3 n = face_normal(patch, s);
-    const int dropped = int(std::max_element(n.begin(), n.end(), [](double x, double y) { return std::abs(x) < std::abs(y); }) - n.begin());
+    const int dropped = dominant_axis(n);
     auto project = [&](int v, bool mirrored) {
       const double x = patch.points[v][(dropped + 1) % 3], y = patch.points[v][(dropped + 2) % 3];
       return K::Point_2(mirrored ? -x : x, y);
@@ -207,29 +208,7 @@ inline std::size_t retriangulate_coplanar_regions(Indexed_patch& patch, std::siz
     if(cdt.number_of_vertices() != r.points.size())
       continue; // sides cross
     std::sort(boundary.begin(), boundary.end());
-    for(auto fh : cdt.all_face_handles())
-      fh->info() = -1;
-    std::vector<CDT::Face_handle> level{cdt.infinite_face()}, next;
-    cdt.infinite_face()->info() = 0;
-    for(int depth = 0; !level.empty(); ++depth)
-    {
-      next.clear();
-      while(!level.empty())
-      {
-        const CDT::Face_handle fh = level.back();
-        level.pop_back();
-        for(int i = 0; i < 3; ++i)
-        {
-          const CDT::Face_handle g = fh->neighbor(i);
-          if(g->info() >= 0)
-            continue;
-          const bool crossing = cdt.is_constrained(CDT::Edge(fh, i));
-          g->info() = crossing ? depth + 1 : depth;
-          (crossing ? next : level).push_back(g);
-        }
-      }
-      std::swap(level, next);
-    }
+    mark_constraint_depth(cdt);
     std::vector<std::array<int, 3> > made;
     for(auto fh : cdt.finite_face_handles())
       if(fh->info() % 2 == 1)

@@ -10,8 +10,13 @@
 
 #include <CGAL/Conformal_remeshing/Error.h>
 #include <CGAL/Conformal_remeshing/internal/welding/annulus.h>
+#include <CGAL/Conformal_remeshing/internal/welding/constrained_domain.h>
 #include <CGAL/Conformal_remeshing/internal/welding/coplanar_region.h>
 
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 
@@ -22,6 +27,7 @@
 #include <limits>
 #include <map>
 #include <numeric>
+#include <set>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -205,7 +211,7 @@ Indexed_patch make_indexed_patch(const TriangleMesh& mesh, VertexPointMap vpm, V
   return patch;
 }
 
-/// The welded disc: the patch, one cone vertex filling each hole, and the annulus, as
+/// The welded disc: the patch, a fill for each hole, and the annulus, as
 /// connectivity and edge lengths. Patch vertices and faces keep their indices.
 struct Welded_disc
 {
@@ -227,6 +233,14 @@ inline Vec3 cross(const Vec3& a, const Vec3& b)
 inline Vec3 face_normal(const Indexed_patch& patch, const std::array<int, 3>& f) // twice the area
 {
   return cross(patch.points[f[1]] - patch.points[f[0]], patch.points[f[2]] - patch.points[f[0]]);
+}
+
+/// The coordinate axis along which `n` has its largest component: dropping that coordinate
+/// projects a plane of normal `n` exactly and bijectively (when the projection of one of its
+/// triangles is not flat, which the callers check with exact predicates).
+inline int dominant_axis(const Vec3& n)
+{
+  return int(std::max_element(n.begin(), n.end(), [](double x, double y) { return std::abs(x) < std::abs(y); }) - n.begin());
 }
 
 /// The normal of the largest face of `patch` (of length twice its area).
@@ -307,8 +321,80 @@ inline Welded_disc unwelded_disc(const Indexed_patch& patch)
   return disc;
 }
 
+/// The constrained Delaunay triangulation of a hole's loop projected to a coordinate plane (the
+/// one most facing `normal`), its faces holding the loop's edges in the loop's order; empty when
+/// the projection is not a simple polygon.
+inline std::vector<std::array<int, 3> > triangulate_loop_in_its_plane(const Indexed_patch& patch, const std::vector<int>& loop,
+                                                                     const Vec3& normal)
+{
+  typedef Epick K;
+  typedef CGAL::Triangulation_vertex_base_with_info_2<int, K> Vb;
+  typedef CGAL::Triangulation_face_base_with_info_2<int, K, CGAL::Constrained_triangulation_face_base_2<K> > Fb;
+  typedef CGAL::Triangulation_data_structure_2<Vb, Fb> Tds;
+  typedef CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::Exact_predicates_tag> CDT;
+  const int dropped = dominant_axis(normal);
+  std::vector<std::pair<K::Point_2, int> > points;
+  for(std::size_t i = 0; i < loop.size(); ++i)
+    points.emplace_back(K::Point_2(patch.points[loop[i]][(dropped + 1) % 3], patch.points[loop[i]][(dropped + 2) % 3]), int(i));
+  CDT cdt;
+  cdt.insert(points.begin(), points.end());
+  if(cdt.number_of_vertices() != loop.size())
+    return {};
+  std::vector<CDT::Vertex_handle> handle(loop.size());
+  for(auto v : cdt.finite_vertex_handles())
+    handle[v->info()] = v;
+  for(std::size_t i = 0; i < loop.size(); ++i)
+    cdt.insert_constraint(handle[i], handle[(i + 1) % loop.size()]);
+  if(cdt.number_of_vertices() != loop.size())
+    return {};
+  mark_constraint_depth(cdt);
+  std::vector<std::array<int, 3> > faces;
+  for(auto f : cdt.finite_face_handles())
+    if(f->info() % 2 == 1)
+      faces.push_back({{loop[f->vertex(0)->info()], loop[f->vertex(1)->info()], loop[f->vertex(2)->info()]}});
+  if(faces.size() + 2 != loop.size())
+    return {};
+  // Each loop edge (a, b) must be a side of a fill face, in that direction (the patch has b -> a).
+  std::map<std::pair<int, int>, int> sides;
+  for(const auto& f : faces)
+    for(int c = 0; c < 3; ++c)
+      ++sides[{f[c], f[(c + 1) % 3]}];
+  bool forward = true, backward = true;
+  for(std::size_t i = 0; i < loop.size(); ++i)
+  {
+    forward = forward && sides.count({loop[i], loop[(i + 1) % loop.size()]});
+    backward = backward && sides.count({loop[(i + 1) % loop.size()], loop[i]});
+  }
+  if(!forward && !backward)
+    return {};
+  if(!forward)
+    for(auto& f : faces)
+      std::swap(f[1], f[2]);
+  return faces;
+}
+
+/// Whether the fan from `apex` over `loop` is Delaunay: at every spoke, the two angles facing it
+/// sum to at most pi (their cotangents to at least 0).
+inline bool fan_is_delaunay(const Indexed_patch& patch, const std::vector<int>& loop, const Vec3& apex)
+{
+  auto cotangent = [&](const Vec3& at, const Vec3& p, const Vec3& q) { // of the angle at `at`
+    const Vec3 u = p - at, v = q - at;
+    return dot(u, v) / norm(cross(u, v));
+  };
+  const std::size_t n = loop.size();
+  for(std::size_t i = 0; i < n; ++i)
+  {
+    const Vec3 &previous = patch.points[loop[(i + n - 1) % n]], &spoke_end = patch.points[loop[i]],
+               &next = patch.points[loop[(i + 1) % n]];
+    if(!(cotangent(previous, spoke_end, apex) + cotangent(next, spoke_end, apex) >= 0.))
+      return false;
+  }
+  return true;
+}
+
 /// Welds `patch` along its loop `welded` to a planar annulus of inner radius `inner_radius` and
-/// fills its other loops with cone vertices. The loop is scaled to the unit circle: the annulus'
+/// fills its other loops: with a cone vertex, or, where the cone's fan is not Delaunay, by the
+/// triangulation of the loop's polygon (when it is simple). The loop is scaled to the unit circle: the annulus'
 /// outer circle is the polygon inscribed in it whose sides are exactly the loop's edge lengths,
 /// so both sides of every seam edge have one length.
 inline Welded_disc weld(const Indexed_patch& patch, std::size_t welded, double inner_radius)
@@ -332,7 +418,12 @@ inline Welded_disc weld(const Indexed_patch& patch, std::size_t welded, double i
   disc.patch_faces = patch.faces.size();
   int next_vertex = int(patch.points.size());
 
-  // A cone vertex per hole, lifted off the hole along its normal so that no fan triangle is flat.
+  std::set<std::pair<int, int> > patch_edges; // smaller vertex first
+  for(const auto& f : patch.faces)
+    for(int c = 0; c < 3; ++c)
+      patch_edges.insert(std::minmax(f[c], f[(c + 1) % 3]));
+  // A fill per hole: a cone vertex lifted off the hole along its normal so that no fan triangle
+  // is flat, or the loop's polygon triangulated.
   for(std::size_t l = 0; l < patch.boundary_loops.size(); ++l)
   {
     if(l == welded)
@@ -358,6 +449,37 @@ inline Welded_disc weld(const Indexed_patch& patch, std::size_t welded, double i
     if(nn > 0.)
       for(int k = 0; k < 3; ++k)
         apex[k] += 0.5 * mean_radius * normal[k] / nn;
+    // A cone whose fan is Delaunay fills the hole (a round hole's does). One that is not is far
+    // from it on a long loop with straight runs (a pocket cut by a plane): Lawson's flips from it
+    // went round in circles among the nearly collinear loop vertices up to the flip cap, on
+    // every pass (3.1 of the 3.2 million flips of the first pass on a patch of issue #7's 100k
+    // suspension arm). Such a hole is filled by the constrained Delaunay triangulation of its
+    // polygon seen along its normal, when that polygon is simple (51 thousand flips there, and
+    // the patch flattens in 3.6 s instead of 5.5). (Polygon fills for round holes too changed
+    // the pulled-back triangles near small holes: 19.8 degrees in a chord-error run.)
+    const bool delaunay_cone = fan_is_delaunay(patch, loop, apex);
+    const std::vector<std::array<int, 3> > flat_fill = delaunay_cone || loop.size() < 8 ? std::vector<std::array<int, 3> >()
+                                                                                           : triangulate_loop_in_its_plane(patch, loop, normal);
+    // A chord of the loop that the patch has already (outside the hole) would be doubled.
+    std::set<std::pair<int, int> > loop_edges;
+    for(std::size_t i = 0; i < loop.size(); ++i)
+      loop_edges.insert({loop[i], loop[(i + 1) % loop.size()]});
+    bool doubles_an_edge = false;
+    for(const auto& f : flat_fill)
+      for(int c = 0; c < 3; ++c)
+        if(!loop_edges.count({f[c], f[(c + 1) % 3]}))
+          doubles_an_edge = doubles_an_edge || patch_edges.count(std::minmax(f[c], f[(c + 1) % 3]));
+    if(!flat_fill.empty() && !doubles_an_edge)
+    {
+      for(const auto& f : flat_fill)
+      {
+        disc.faces.push_back(f);
+        disc.lengths.push_back({{length(f[0], f[1]), length(f[1], f[2]), length(f[2], f[0])}});
+      }
+      for(std::size_t i = 0; i < loop.size(); ++i)
+        disc.seams.push_back({loop[i], loop[(i + 1) % loop.size()]});
+      continue;
+    }
     const int cone = next_vertex++;
     for(std::size_t i = 0; i < loop.size(); ++i)
     {
