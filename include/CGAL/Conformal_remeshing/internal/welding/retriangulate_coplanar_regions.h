@@ -34,9 +34,6 @@ namespace welding {
 
 namespace coplanar {
 
-inline std::uint64_t directed_key(int a, int b) { return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b); }
-inline std::uint64_t undirected_key(int a, int b) { return directed_key((std::min)(a, b), (std::max)(a, b)); }
-
 // The faces around each vertex of `region`, counterclockwise from the one after a boundary side
 // (`fan_start`, `fan`); false if the faces at a vertex do not form one fan (a pinched region).
 inline bool make_fans(Coplanar_region& region)
@@ -91,8 +88,6 @@ inline std::size_t retriangulate_coplanar_regions(Indexed_patch& patch, std::siz
   typedef CGAL::Triangulation_face_base_with_info_2<int, K, CGAL::Constrained_triangulation_face_base_2<K> > Fb;
   typedef CGAL::Triangulation_data_structure_2<Vb, Fb> Tds;
   typedef CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::Exact_predicates_tag> CDT;
-  using coplanar::directed_key;
-  using coplanar::undirected_key;
 
   const int nf = int(patch.faces.size());
   std::unordered_map<std::uint64_t, int> face_of; // directed side -> face (of the input faces)

@@ -225,6 +225,10 @@ struct Welded_disc
   double scale = 1.;                           // welded length = 3D length * scale
 };
 
+/// A hash key of the edge from vertex `a` to vertex `b`, and of the edge between them.
+inline std::uint64_t directed_key(int a, int b) { return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b); }
+inline std::uint64_t undirected_key(int a, int b) { return directed_key((std::min)(a, b), (std::max)(a, b)); }
+
 inline double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 inline Vec3 cross(const Vec3& a, const Vec3& b)
 {
@@ -418,10 +422,7 @@ inline Welded_disc weld(const Indexed_patch& patch, std::size_t welded, double i
   disc.patch_faces = patch.faces.size();
   int next_vertex = int(patch.points.size());
 
-  std::set<std::pair<int, int> > patch_edges; // smaller vertex first
-  for(const auto& f : patch.faces)
-    for(int c = 0; c < 3; ++c)
-      patch_edges.insert(std::minmax(f[c], f[(c + 1) % 3]));
+  std::set<std::pair<int, int> > patch_edges; // smaller vertex first; made for the first polygon fill
   // A fill per hole: a cone vertex lifted off the hole along its normal so that no fan triangle
   // is flat, or the loop's polygon triangulated.
   for(std::size_t l = 0; l < patch.boundary_loops.size(); ++l)
@@ -455,20 +456,27 @@ inline Welded_disc weld(const Indexed_patch& patch, std::size_t welded, double i
     // every pass (3.1 of the 3.2 million flips of the first pass on a patch of issue #7's 100k
     // suspension arm). Such a hole is filled by the constrained Delaunay triangulation of its
     // polygon seen along its normal, when that polygon is simple (51 thousand flips there, and
-    // the patch flattens in 3.6 s instead of 5.5). (Polygon fills for round holes too changed
+    // the patch flattens in 3.0 s instead of 5.5). (Polygon fills for round holes too changed
     // the pulled-back triangles near small holes: 19.8 degrees in a chord-error run.)
     const bool delaunay_cone = fan_is_delaunay(patch, loop, apex);
     const std::vector<std::array<int, 3> > flat_fill = delaunay_cone || loop.size() < 8 ? std::vector<std::array<int, 3> >()
                                                                                            : triangulate_loop_in_its_plane(patch, loop, normal);
     // A chord of the loop that the patch has already (outside the hole) would be doubled.
-    std::set<std::pair<int, int> > loop_edges;
-    for(std::size_t i = 0; i < loop.size(); ++i)
-      loop_edges.insert({loop[i], loop[(i + 1) % loop.size()]});
     bool doubles_an_edge = false;
-    for(const auto& f : flat_fill)
-      for(int c = 0; c < 3; ++c)
-        if(!loop_edges.count({f[c], f[(c + 1) % 3]}))
-          doubles_an_edge = doubles_an_edge || patch_edges.count(std::minmax(f[c], f[(c + 1) % 3]));
+    if(!flat_fill.empty())
+    {
+      if(patch_edges.empty())
+        for(const auto& f : patch.faces)
+          for(int c = 0; c < 3; ++c)
+            patch_edges.insert(std::minmax(f[c], f[(c + 1) % 3]));
+      std::set<std::pair<int, int> > loop_edges;
+      for(std::size_t i = 0; i < loop.size(); ++i)
+        loop_edges.insert({loop[i], loop[(i + 1) % loop.size()]});
+      for(const auto& f : flat_fill)
+        for(int c = 0; c < 3; ++c)
+          if(!loop_edges.count({f[c], f[(c + 1) % 3]}))
+            doubles_an_edge = doubles_an_edge || patch_edges.count(std::minmax(f[c], f[(c + 1) % 3]));
+    }
     if(!flat_fill.empty() && !doubles_an_edge)
     {
       for(const auto& f : flat_fill)
@@ -544,7 +552,6 @@ inline std::size_t open_numerically_flat_faces(Welded_disc& disc)
 {
   const double margin = 64. * std::numeric_limits<double>::epsilon();
   const std::size_t nf = disc.faces.size();
-  auto key = [](int a, int b) { return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b); };
   // The longest side of face f, if the face lacks the margin; -1 otherwise.
   auto flat_side = [&](std::size_t f) {
     const std::array<double, 3>& l = disc.lengths[f];
@@ -562,7 +569,7 @@ inline std::size_t open_numerically_flat_faces(Welded_disc& disc)
   side_of.reserve(3 * nf);
   for(std::size_t f = 0; f < nf; ++f)
     for(int c = 0; c < 3; ++c)
-      side_of.emplace(key(disc.faces[f][c], disc.faces[f][(c + 1) % 3]), 3 * f + std::size_t(c));
+      side_of.emplace(directed_key(disc.faces[f][c], disc.faces[f][(c + 1) % 3]), 3 * f + std::size_t(c));
   std::size_t shortened = 0;
   while(!flat.empty() && shortened < 4 * nf)
   {
@@ -577,7 +584,7 @@ inline std::size_t open_numerically_flat_faces(Welded_disc& disc)
       continue; // not a sliver: a side of length zero, rejected by the triangulation
     l[c] = opened;
     ++shortened;
-    const auto twin = side_of.find(key(disc.faces[f][(c + 1) % 3], disc.faces[f][c]));
+    const auto twin = side_of.find(directed_key(disc.faces[f][(c + 1) % 3], disc.faces[f][c]));
     if(twin != side_of.end())
     {
       disc.lengths[twin->second / 3][twin->second % 3] = opened;
