@@ -36,6 +36,8 @@
 #include <sstream>
 #include <string>
 #include <type_traits>
+#include <unordered_map>
+#include <utility>
 #include <vector>
 
 #ifdef CGAL_LINKED_WITH_TBB
@@ -242,6 +244,46 @@ inline Glue_check check_glue(const std::vector<std::vector<Boundary_sample> >& l
   return result;
 }
 
+// The plane-to-surface map of a flattened patch, keeping where it carried each planar point: the
+// optimizer lifts every point it tries and the pull-back then carries the final points, which
+// were all lifted before (each carriage walks back through the flow's flips: on CAD parts most of
+// the meshing stage).
+class Remembering_surface_map
+{
+public:
+  struct Lifted
+  {
+    Conformal_flattening::Patch_location on_patch;
+    bool clamped; // outside every flat triangle by rounding, moved onto the nearest one
+  };
+
+  Remembering_surface_map(const Conformal_flattening& flat, const Planar_locator& locator) : flat_(flat), locator_(locator) {}
+
+  const Lifted& lift(const Epick::Point_2& p)
+  {
+    const auto inserted = lifted_.emplace(std::make_pair(p.x(), p.y()), Lifted());
+    if(inserted.second)
+    {
+      const Planar_locator::Location l = locator_.locate(p);
+      inserted.first->second = Lifted{flat_.patch_location_of_triangle(l.triangle, l.coordinates),
+                                      (std::min)({l.coordinates[0], l.coordinates[1], l.coordinates[2]}) == 0.};
+    }
+    return inserted.first->second;
+  }
+
+private:
+  struct Hash
+  {
+    std::size_t operator()(const std::pair<double, double>& p) const
+    {
+      return std::hash<double>()(p.first) ^ (std::hash<double>()(p.second) * 0x9e3779b97f4a7c15ull);
+    }
+  };
+  const Conformal_flattening& flat_;
+  const Planar_locator& locator_;
+  std::unordered_map<std::pair<double, double>, Lifted, Hash> lifted_;
+};
+
 // Planar Delaunay refinement of a flattened patch with the shared boundary samples, then the
 // pull-back of the new points onto the surface through the flow's correspondence.
 // No edge joins the two samples of a pair in `diagonals_to_split` (sample indices, smaller first).
@@ -294,15 +336,12 @@ inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, c
     return result;
 
   // Flips and moves judged on the surface (see surface_optimization.h). The surface positions are
-  // the optimizer's working state only: the pull-back below locates the final points again, for
-  // their input faces.
+  // the optimizer's working state only: the pull-back below finds the final points' input faces.
   start = Clock::now();
+  Remembering_surface_map surface_map(flat, locator);
   if(optimization_rounds > 0)
   {
-    const auto lift = [&](const Epick::Point_2& p) {
-      const Planar_locator::Location l = locator.locate(p);
-      return flat.surface_point(l.triangle, l.coordinates);
-    };
+    const auto lift = [&](const Epick::Point_2& p) { return flat.surface_point(surface_map.lift(p).on_patch); };
     std::vector<Epick::Point_3> positions;
     positions.reserve(planar.points.size());
     for(const auto& loop : loops)
@@ -322,10 +361,9 @@ inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, c
   start = Clock::now();
   for(std::size_t i = planar.number_of_samples; i < planar.points.size(); ++i)
   {
-    const Planar_locator::Location l = locator.locate(planar.points[i]);
-    const Domain_point q = flat.to_surface(l.triangle, l.coordinates);
-    if((std::min)({l.coordinates[0], l.coordinates[1], l.coordinates[2]}) == 0.)
-      ++result.clamped_vertices;
+    const Remembering_surface_map::Lifted& lifted = surface_map.lift(planar.points[i]);
+    const Domain_point q = flat.to_surface(lifted.on_patch);
+    result.clamped_vertices += lifted.clamped;
     result.interior_points.push_back(q.point);
     result.interior_faces.push_back(patch.segmented_face[q.input_face]);
   }

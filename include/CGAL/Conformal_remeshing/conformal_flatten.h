@@ -135,29 +135,53 @@ struct Conformal_flattening
   /// the region of every face of `triangulation` (whose vertices are laid out in `layout`)
   std::vector<Welded_region> face_region;
 
-  /// The surface point at barycentric coordinates `b` of `triangles[t]`: the input face and
-  /// barycentric coordinates there, through the bijective correspondence of the flow.
-  Domain_point to_surface(std::size_t t, const std::array<double, 3>& b) const
+  /// A point of the patch region: a face of `patch` and barycentric coordinates there.
+  typedef std::pair<int, std::array<double, 3> > Patch_location;
+
+  /// Where the point at barycentric coordinates `b` of `triangles[t]` lies on the patch, through
+  /// the bijective correspondence of the flow (a walk back through its flips and splits).
+  Patch_location patch_location_of_triangle(std::size_t t, const std::array<double, 3>& b) const
   {
-    const std::pair<int, std::array<double, 3> > on_patch = patch_location_of_triangle(t, b);
+    typedef Intrinsic_triangulation<double>::Face_location Location;
+    const Location initial = triangulation.to_input(Location{triangle_face[t], {{b[0], b[1], b[2]}}});
+    return patch_location(initial.face, {{initial.coordinates[0], initial.coordinates[1], initial.coordinates[2]}});
+  }
+
+  /// The surface point at a patch location, with its input face and barycentric coordinates
+  /// there (`uv` is left at the origin).
+  Domain_point to_surface(const Patch_location& l) const
+  {
     Domain_point p;
-    p.uv = Epick::Point_2(b[0] * layout[triangles[t][0]].x() + b[1] * layout[triangles[t][1]].x() + b[2] * layout[triangles[t][2]].x(),
-                          b[0] * layout[triangles[t][0]].y() + b[1] * layout[triangles[t][1]].y() + b[2] * layout[triangles[t][2]].y());
-    const internal::welding::Vec3 x = patch.point_in_face(on_patch.first, on_patch.second);
-    p.point = Epick::Point_3(x[0], x[1], x[2]);
-    const auto location = patch.input_location(on_patch.first, on_patch.second);
+    p.uv = Epick::Point_2(0., 0.);
+    p.point = surface_point(l);
+    const auto location = patch.input_location(l.first, l.second);
     p.input_face = std::size_t(location.first);
     p.input_coordinates = location.second;
     return p;
   }
 
-  /// The surface point of `to_surface(t, b)` alone, without locating it in an input face (which
+  /// The surface point at a patch location alone, without locating it in an input face (which
   /// takes a walk in a retriangulated coplanar region).
+  Epick::Point_3 surface_point(const Patch_location& l) const
+  {
+    const internal::welding::Vec3 x = patch.point_in_face(l.first, l.second);
+    return Epick::Point_3(x[0], x[1], x[2]);
+  }
+
+  /// The surface point at barycentric coordinates `b` of `triangles[t]`: the input face and
+  /// barycentric coordinates there, through the bijective correspondence of the flow.
+  Domain_point to_surface(std::size_t t, const std::array<double, 3>& b) const
+  {
+    Domain_point p = to_surface(patch_location_of_triangle(t, b));
+    p.uv = Epick::Point_2(b[0] * layout[triangles[t][0]].x() + b[1] * layout[triangles[t][1]].x() + b[2] * layout[triangles[t][2]].x(),
+                          b[0] * layout[triangles[t][0]].y() + b[1] * layout[triangles[t][1]].y() + b[2] * layout[triangles[t][2]].y());
+    return p;
+  }
+
+  /// The surface point of `to_surface(t, b)` alone.
   Epick::Point_3 surface_point(std::size_t t, const std::array<double, 3>& b) const
   {
-    const std::pair<int, std::array<double, 3> > on_patch = patch_location_of_triangle(t, b);
-    const internal::welding::Vec3 x = patch.point_in_face(on_patch.first, on_patch.second);
-    return Epick::Point_3(x[0], x[1], x[2]);
+    return surface_point(patch_location_of_triangle(t, b));
   }
 
   /// The surface point at corner `c` of `triangles[t]`: the image of that vertex.
@@ -178,14 +202,6 @@ struct Conformal_flattening
   std::vector<int> faces_of_vertex_start, faces_of_vertex;
 
 private:
-  // The patch face and barycentric coordinates there of the point at `b` in `triangles[t]`.
-  std::pair<int, std::array<double, 3> > patch_location_of_triangle(std::size_t t, const std::array<double, 3>& b) const
-  {
-    typedef Intrinsic_triangulation<double>::Face_location Location;
-    const Location initial = triangulation.to_input(Location{triangle_face[t], {{b[0], b[1], b[2]}}});
-    return patch_location(initial.face, {{initial.coordinates[0], initial.coordinates[1], initial.coordinates[2]}});
-  }
-
   // A location in a face of the welded disc, as a location in a patch face. A point of the patch
   // that lies on a seam (a boundary or hole loop) may come back from the correspondence in the
   // annulus or hole fill beside it, with weight only on seam vertices: it is moved across.
