@@ -15,6 +15,7 @@
 #include <CGAL/boost/graph/generators.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/Surface_mesh_parameterization/LSCM_parameterizer_3.h>
@@ -24,6 +25,7 @@
 
 #include <array>
 #include <complex>
+#include <iostream>
 #include <string>
 #include <vector>
 
@@ -605,6 +607,54 @@ TEST(ConformalFlatten, CoplanarRegionsOfACadPartNeedFewFlips)
                                           arm.point(arm.target(arm.next(h))), location.second[2]);
     ASSERT_LT(std::sqrt(CGAL::squared_distance(y, K::Point_3(x[0], x[1], x[2]))), 1e-9) << "face " << f;
   }
+}
+
+TEST(ConformalFlatten, GridPointsInCoplanarRegionsSpareTheRefinementItsFlips)
+{
+  // The refinement to a maximum edge length split the long edges of a planar face's
+  // triangulation (its vertices all on its outline) one at a time, with two dozen flips each on
+  // issue #7's arm, and every point pulled back walked back through them. Grid points added in
+  // the plane leave it little to do there, and lie on the input faces they are located in.
+  Mesh arm;
+  bm::Paper_model_parameters p;
+  p.target_vertices = 10000;
+  bm::make_suspension_arm(arm, p);
+  const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(arm);
+  const double maximum_length = 0.02 * std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin())
+                                                 + CGAL::square(box.zmax() - box.zmin()));
+  auto refinement = [&](double spacing, CR::internal::welding::Indexed_patch& patch) {
+    patch = CR::internal::welding::make_indexed_patch(arm, get(CGAL::vertex_point, arm), get(CGAL::vertex_index, arm),
+                                                      get(CGAL::face_index, arm));
+    CR::internal::welding::retriangulate_coplanar_regions(patch, spacing);
+    std::vector<std::array<double, 3> > lengths;
+    for(const auto& f : patch.faces)
+      lengths.push_back({{CR::internal::welding::distance(patch.points[f[0]], patch.points[f[1]]),
+                          CR::internal::welding::distance(patch.points[f[1]], patch.points[f[2]]),
+                          CR::internal::welding::distance(patch.points[f[2]], patch.points[f[0]])}});
+    CR::Intrinsic_triangulation<double> tri(int(patch.points.size()), patch.faces, lengths);
+    std::size_t splits = 0;
+    EXPECT_TRUE(CR::internal::split_long_patch_edges(tri, patch.faces.size(), maximum_length, 1000000, splits));
+    return std::make_pair(tri.number_of_flips(), splits);
+  };
+  CR::internal::welding::Indexed_patch without, with;
+  const auto plain = refinement(0., without), gridded = refinement(maximum_length / 1.5, with);
+  EXPECT_EQ(without.points.size(), num_vertices(arm));
+  EXPECT_GT(with.points.size(), without.points.size() + 100);
+  // (Measured: 20601 flips and 2735 splits without, 7661 and 922 with 1682 grid points.)
+  EXPECT_LT(2 * gridded.first, plain.first) << "flips without grid points: " << plain.first << ", with: " << gridded.first;
+  EXPECT_LT(2 * gridded.second, plain.second) << "splits without grid points: " << plain.second << ", with: " << gridded.second;
+  // Every corner and centroid of the new faces lies in the input face it is located in.
+  for(std::size_t f = 0; f < with.faces.size(); ++f)
+    for(const std::array<double, 3>& b : {std::array<double, 3>{{1. / 3, 1. / 3, 1. / 3}}, std::array<double, 3>{{1., 0., 0.}},
+                                         std::array<double, 3>{{0., 1., 0.}}, std::array<double, 3>{{0., 0., 1.}}})
+    {
+      const auto location = with.input_location(int(f), b);
+      const CR::internal::welding::Vec3 x = with.point_in_face(int(f), b);
+      const auto h = arm.halfedge(Mesh::Face_index(Mesh::size_type(location.first)));
+      const K::Point_3 y = CGAL::barycenter(arm.point(arm.source(h)), location.second[0], arm.point(arm.target(h)), location.second[1],
+                                            arm.point(arm.target(arm.next(h))), location.second[2]);
+      ASSERT_LT(std::sqrt(CGAL::squared_distance(y, K::Point_3(x[0], x[1], x[2]))), 1e-9) << "face " << f;
+    }
 }
 
 TEST(ConformalFlatten, HolesFilledByTheirPolygonMapBackContinuously)

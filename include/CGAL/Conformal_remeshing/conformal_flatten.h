@@ -552,10 +552,12 @@ Conformal_flattening conformal_flatten(const TriangleMesh& mesh,
   if(!planar)
   {
     patch.split_long_boundary_edges(welded, patch.loop_length(patch.boundary_loops[welded]) / 32.);
-    // (A planar patch is not flipped: its own triangles are laid out.)
-    report.retriangulated_faces = internal::welding::retriangulate_coplanar_regions(patch);
+    report.boundary_splits = patch.points.size() - points_before;
+    // (A planar patch is not flipped: its own triangles are laid out.) Grid points inside the
+    // coplanar regions at 1/1.5 of the maximum length: the diagonals of their squares are short
+    // enough not to be split.
+    report.retriangulated_faces = internal::welding::retriangulate_coplanar_regions(patch, maximum_length / 1.5);
   }
-  report.boundary_splits = patch.points.size() - points_before;
 
   internal::welding::Welded_disc disc = planar ? internal::welding::unwelded_disc(patch)
                                                : internal::welding::weld(patch, welded, inner_radius);

@@ -37,6 +37,9 @@ struct Coplanar_region
   std::vector<int> fan_start, fan;           // faces around each vertex, counterclockwise
   std::vector<int> input_face;               // the input face each original face lies in,
   std::vector<std::array<std::array<double, 3>, 3> > input_coordinates; // and its corners there
+  /// for a vertex the retriangulation added inside the region, the original face holding it (it
+  /// has no fan of original faces); -1 for the region's own vertices
+  std::vector<int> containing_face;
 
   int local_vertex(int patch_vertex) const
   {
@@ -56,17 +59,26 @@ struct Coplanar_region
       x += b[c] * points[start[c]].x();
       y += b[c] * points[start[c]].y();
     }
-    const Point_2 p(x, y);
+    return locate_point(start, Point_2(x, y));
+  }
+
+  /// The original face holding `p` (in the projection), walking from the vertices `start` (local
+  /// indices) of a triangle that holds it, and `p`'s barycentric coordinates there.
+  std::pair<int, std::array<double, 3> > locate_point(const std::array<int, 3>& start, const Point_2& p) const
+  {
     int face = -1;
     for(std::size_t budget = 16; face < 0 && budget < 4 * faces.size() + 64; budget *= 4)
       for(int c = 0; c < 3 && face < 0; ++c)
-        face = walk(start[c], p, budget);
+        face = is_added(start[c]) ? walk_from_inside(containing_face[start[c]], points[start[c]], p, budget)
+                                  : walk(start[c], p, budget);
     if(face < 0)
       face = scan(p);
     return {face, coordinates(face, p)};
   }
 
 private:
+  bool is_added(int v) const { return std::size_t(v) < containing_face.size() && containing_face[v] >= 0; }
+
   int third(int f, int a, int b) const
   {
     for(int v : faces[f])
@@ -171,6 +183,38 @@ private:
     return -1;
   }
 
+  // Walks from `s`, a point of face `f`, to `p` along the segment between them; the face holding
+  // `p`, or -1 when `budget` faces were not enough or the segment runs through a vertex.
+  int walk_from_inside(int f, const Point_2& s, const Point_2& p, std::size_t budget) const
+  {
+    int entered = -1; // the side f was entered by
+    for(std::size_t steps = 0; steps < budget; ++steps)
+    {
+      if(holds(f, p))
+        return f;
+      int exit = -1; // the side p lies beyond whose ends lie on either side of the line from s to p
+      for(int c = 0; c < 3 && exit < 0; ++c)
+      {
+        const Point_2 &a = points[faces[f][c]], &b = points[faces[f][(c + 1) % 3]];
+        if(c == entered || CGAL::orientation(a, b, p) != CGAL::NEGATIVE)
+          continue;
+        const CGAL::Orientation at_a = CGAL::orientation(s, p, a), at_b = CGAL::orientation(s, p, b);
+        if(at_a == CGAL::COLLINEAR || at_b == CGAL::COLLINEAR)
+          return -1;
+        if(at_a != at_b)
+          exit = c;
+      }
+      if(exit < 0)
+        return -1;
+      const int across = neighbor[f][exit];
+      if(across < 0)
+        return f; // p is outside the region by rounding: the last face is the nearest
+      entered = side(across, faces[f][(exit + 1) % 3], faces[f][exit]);
+      f = across;
+    }
+    return -1;
+  }
+
   // The face holding `p` by trying every face, or the nearest vertex's first face (for a point
   // that no walk reached: outside the region by rounding, past a boundary vertex's fan).
   int scan(const Point_2& p) const
@@ -182,7 +226,7 @@ private:
     for(std::size_t v = 1; v < points.size(); ++v)
       if(CGAL::compare_distance_to_point(p, points[v], points[nearest]) == CGAL::SMALLER)
         nearest = v;
-    return fan[fan_start[nearest]];
+    return is_added(int(nearest)) ? containing_face[nearest] : fan[fan_start[nearest]];
   }
 
   // Barycentric coordinates of `p` in face `f`, clamped to it (from the projected areas).

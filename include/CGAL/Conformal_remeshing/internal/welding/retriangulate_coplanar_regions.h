@@ -71,6 +71,90 @@ inline bool make_fans(Coplanar_region& region)
   return true;
 }
 
+// Adds to `cdt`, the constrained Delaunay triangulation of `region` (vertex `info()`: local
+// index; faces marked by `mark_constraint_depth()`), the points of a square grid of side
+// `spacing` inside the region, but none within a third of `spacing` of its boundary: the
+// intrinsic refinement would otherwise split the long edges of a planar CAD face's triangulation
+// (its vertices all on its outline) one at a time, two dozen flips each on the 87k suspension arm
+// of issue #7, and every point pulled back later walks back through those flips. The new vertices
+// join `region` (patch indices from `first_index` on, with the original faces holding them);
+// returns their 3D points, on the original faces.
+template <typename CDT>
+std::vector<Vec3> add_interior_points(CDT& cdt, Coplanar_region& region, double spacing, int first_index,
+                                      const std::vector<Vec3>& patch_points)
+{
+  typedef typename CDT::Point Point;
+  CGAL::Bbox_2 box;
+  for(const Point& p : region.points)
+    box += p.bbox();
+  if(!(spacing > 0.) || ((box.xmax() - box.xmin()) / spacing + 1.) * ((box.ymax() - box.ymin()) / spacing + 1.) > 4e6)
+    return {};
+  struct Added
+  {
+    Point point;
+    typename CDT::Vertex_handle vertex;
+    std::pair<int, std::array<double, 3> > original; // face and barycentric coordinates
+  };
+  std::vector<Added> added;
+  typename CDT::Face_handle hint;
+  for(double y = box.ymin() + 0.5 * spacing; y < box.ymax(); y += spacing)
+    for(double x = box.xmin() + 0.5 * spacing; x < box.xmax(); x += spacing)
+    {
+      const Point p(x, y);
+      typename CDT::Locate_type type;
+      int i = 0;
+      const typename CDT::Face_handle f = cdt.locate(p, type, i, hint);
+      hint = f;
+      if(type != CDT::FACE || f->info() % 2 != 1)
+        continue;
+      std::array<int, 3> corners;
+      for(int c = 0; c < 3; ++c)
+        corners[c] = f->vertex(c)->info();
+      added.push_back(Added{p, typename CDT::Vertex_handle(), region.locate_point(corners, p)});
+    }
+  for(std::size_t k = 0; k < added.size(); ++k) // after the walks, which start from the triangulation's vertices
+  {
+    added[k].vertex = cdt.insert(added[k].point);
+    added[k].vertex->info() = -1;
+  }
+  // Too near the boundary: a constrained side of a face around it is closer than a third of spacing.
+  const double nearest = CGAL::square(spacing / 3.);
+  std::vector<char> kept(added.size(), 1);
+  for(std::size_t k = 0; k < added.size(); ++k)
+  {
+    auto f = cdt.incident_faces(added[k].vertex), done = f;
+    do
+    {
+      const int i = f->index(added[k].vertex);
+      if(cdt.is_constrained(typename CDT::Edge(f, i))
+         && CGAL::squared_distance(added[k].vertex->point(),
+                                   typename CDT::Geom_traits::Segment_2(f->vertex(CDT::cw(i))->point(), f->vertex(CDT::ccw(i))->point())) < nearest)
+        kept[k] = 0;
+    } while(++f != done && kept[k]);
+  }
+  for(std::size_t k = 0; k < added.size(); ++k)
+    if(!kept[k])
+      cdt.remove(added[k].vertex);
+  region.containing_face.assign(region.vertices.size(), -1);
+  std::vector<Vec3> points;
+  for(std::size_t k = 0; k < added.size(); ++k)
+    if(kept[k])
+    {
+      added[k].vertex->info() = int(region.vertices.size());
+      region.vertices.push_back(first_index + int(points.size()));
+      region.points.push_back(added[k].vertex->point());
+      region.containing_face.push_back(added[k].original.first);
+      region.fan_start.push_back(region.fan_start.back()); // no original face has it as a corner
+      Vec3 x{{0., 0., 0.}};
+      for(int c = 0; c < 3; ++c)
+        for(int d = 0; d < 3; ++d)
+          x[d] += added[k].original.second[c] * patch_points[region.vertices[region.faces[added[k].original.first][c]]][d];
+      points.push_back(x);
+    }
+  mark_constraint_depth(cdt);
+  return points;
+}
+
 } // namespace coplanar
 
 /// Retriangulates every edge-connected set of at least `smallest_region` faces of `patch` that
@@ -78,10 +162,13 @@ inline bool make_fans(Coplanar_region& region)
 /// triangulation of its vertices with its boundary sides as constraints. The region keeps its
 /// vertices and boundary; a region is left as it is when its projection is not a plane
 /// triangulation of the same domain (points that coincide, sides that cross) or when a new edge
-/// would double an edge of the patch outside the region. The new faces take the slots of the old
-/// ones, with `input_face` `-1 - r` for region `r` of `patch.coplanar_regions`, which locates
-/// points among the old faces. Returns the number of faces retriangulated.
-inline std::size_t retriangulate_coplanar_regions(Indexed_patch& patch, std::size_t smallest_region = 16)
+/// would double an edge of the patch outside the region. With a `spacing`, points of a square
+/// grid of that side inside the region are added to its triangulation first (see
+/// `coplanar::add_interior_points()`), appended to `patch.points`. The new faces take the slots
+/// of the old ones, then the end of `patch.faces`, with `input_face` `-1 - r` for region `r` of
+/// `patch.coplanar_regions`, which locates points among the old faces. Returns the number of
+/// faces retriangulated.
+inline std::size_t retriangulate_coplanar_regions(Indexed_patch& patch, double spacing = 0., std::size_t smallest_region = 16)
 {
   typedef Epick K;
   typedef CGAL::Triangulation_vertex_base_with_info_2<int, K> Vb;
@@ -205,9 +292,31 @@ inline std::size_t retriangulate_coplanar_regions(Indexed_patch& patch, std::siz
     std::sort(boundary.begin(), boundary.end());
     mark_constraint_depth(cdt);
     std::vector<std::array<int, 3> > made;
-    for(auto fh : cdt.finite_face_handles())
-      if(fh->info() % 2 == 1)
-        made.push_back({{fh->vertex(0)->info(), fh->vertex(1)->info(), fh->vertex(2)->info()}});
+    std::vector<std::uint64_t> new_inner_edges;
+    auto collect_faces = [&]() {
+      made.clear();
+      new_inner_edges.clear();
+      for(auto fh : cdt.finite_face_handles())
+        if(fh->info() % 2 == 1)
+          made.push_back({{fh->vertex(0)->info(), fh->vertex(1)->info(), fh->vertex(2)->info()}});
+      for(const auto& f : made)
+        for(int k = 0; k < 3; ++k)
+          if(f[k] < f[(k + 1) % 3]) // once per inner edge: boundary sides are kept
+          {
+            const std::uint64_t e = undirected_key(r.vertices[f[k]], r.vertices[f[(k + 1) % 3]]);
+            if(!std::binary_search(boundary.begin(), boundary.end(), std::make_pair(f[k], f[(k + 1) % 3]))
+               && !std::binary_search(boundary.begin(), boundary.end(), std::make_pair(f[(k + 1) % 3], f[k])))
+              new_inner_edges.push_back(e);
+          }
+    };
+    // It would join two vertices joined outside the region already.
+    auto doubles_an_edge = [&]() {
+      for(std::uint64_t e : new_inner_edges)
+        if(!old_inner_edges.count(e) && edges.count(e))
+          return true;
+      return false;
+    };
+    collect_faces();
     bool same_domain = made.size() == region.size();
     for(std::size_t i = 0; i < boundary.size() && same_domain; ++i)
     {
@@ -222,34 +331,39 @@ inline std::size_t retriangulate_coplanar_regions(Indexed_patch& patch, std::siz
         same_domain = !cdt.is_infinite(left) && left->info() % 2 == 1;
       }
     }
-    std::vector<std::uint64_t> new_inner_edges;
-    for(const auto& f : made)
-      for(int k = 0; k < 3; ++k)
-        if(f[k] < f[(k + 1) % 3]) // once per inner edge: boundary sides are kept
-        {
-          const std::uint64_t e = undirected_key(r.vertices[f[k]], r.vertices[f[(k + 1) % 3]]);
-          if(!std::binary_search(boundary.begin(), boundary.end(), std::make_pair(f[k], f[(k + 1) % 3]))
-             && !std::binary_search(boundary.begin(), boundary.end(), std::make_pair(f[(k + 1) % 3], f[k])))
-            new_inner_edges.push_back(e);
-        }
-    if(!same_domain)
+    if(!same_domain || doubles_an_edge())
       continue;
-    for(std::uint64_t e : new_inner_edges)
-      if(!old_inner_edges.count(e) && edges.count(e))
-        same_domain = false; // it would join two vertices joined outside the region already
-    if(!same_domain)
-      continue;
+    const std::vector<Vec3> added_points =
+        coplanar::add_interior_points(cdt, r, spacing, int(patch.points.size()), patch.points);
+    if(!added_points.empty())
+    {
+      collect_faces();
+      if(doubles_an_edge())
+        continue;
+    }
 
     for(std::uint64_t e : old_inner_edges)
       edges.erase(e);
     edges.insert(new_inner_edges.begin(), new_inner_edges.end());
+    patch.points.insert(patch.points.end(), added_points.begin(), added_points.end());
     const int index = -1 - int(patch.coplanar_regions.size());
-    for(std::size_t i = 0; i < region.size(); ++i)
+    for(std::size_t i = 0; i < made.size(); ++i)
     {
+      std::array<int, 3> corners;
       for(int k = 0; k < 3; ++k)
-        patch.faces[region[i]][k] = r.vertices[made[i][k]];
-      patch.input_face[region[i]] = index;
-      patch.input_coordinates[region[i]] = {};
+        corners[k] = r.vertices[made[i][k]];
+      if(i < region.size())
+      {
+        patch.faces[region[i]] = corners;
+        patch.input_face[region[i]] = index;
+        patch.input_coordinates[region[i]] = {};
+      }
+      else
+      {
+        patch.faces.push_back(corners);
+        patch.input_face.push_back(index);
+        patch.input_coordinates.push_back({});
+      }
     }
     patch.coplanar_regions.push_back(std::move(r));
     replaced += region.size();
