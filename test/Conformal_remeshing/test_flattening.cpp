@@ -532,6 +532,27 @@ K::Point_3 input_point(const Mesh& mesh, std::size_t face, const std::array<doub
   return CGAL::barycenter(mesh.point(mesh.source(h)), b[0], mesh.point(mesh.target(h)), b[1],
                           mesh.point(mesh.target(mesh.next(h))), b[2]);
 }
+
+// How far the point at `b` in face `f` of `patch` lies from the point of the input face it is
+// located in, at the coordinates found there.
+double distance_to_located_input_point(const Mesh& input, const CR::internal::welding::Indexed_patch& patch, std::size_t f,
+                                       const std::array<double, 3>& b)
+{
+  const auto location = patch.input_location(int(f), b);
+  const CR::internal::welding::Vec3 x = patch.point_in_face(int(f), b);
+  return std::sqrt(CGAL::squared_distance(input_point(input, std::size_t(location.first), location.second), K::Point_3(x[0], x[1], x[2])));
+}
+
+// The intrinsic triangulation of a patch's faces with the lengths of their 3D edges.
+CR::Intrinsic_triangulation<double> intrinsic_triangulation_of(const CR::internal::welding::Indexed_patch& patch)
+{
+  std::vector<std::array<double, 3> > lengths;
+  for(const auto& f : patch.faces)
+    lengths.push_back({{CR::internal::welding::distance(patch.points[f[0]], patch.points[f[1]]),
+                        CR::internal::welding::distance(patch.points[f[1]], patch.points[f[2]]),
+                        CR::internal::welding::distance(patch.points[f[2]], patch.points[f[0]])}});
+  return CR::Intrinsic_triangulation<double>(int(patch.points.size()), patch.faces, lengths);
+}
 } // namespace
 
 TEST(ConformalFlatten, CoplanarFansAreRetriangulatedAndPointsLocatedInTheirInputFaces)
@@ -583,12 +604,7 @@ TEST(ConformalFlatten, CoplanarRegionsOfACadPartNeedFewFlips)
   CR::internal::welding::Indexed_patch patch =
     CR::internal::welding::make_indexed_patch(arm, get(CGAL::vertex_point, arm), get(CGAL::vertex_index, arm), get(CGAL::face_index, arm));
   auto flips = [&] {
-    std::vector<std::array<double, 3> > lengths;
-    for(const auto& f : patch.faces)
-      lengths.push_back({{CR::internal::welding::distance(patch.points[f[0]], patch.points[f[1]]),
-                          CR::internal::welding::distance(patch.points[f[1]], patch.points[f[2]]),
-                          CR::internal::welding::distance(patch.points[f[2]], patch.points[f[0]])}});
-    return CR::Intrinsic_triangulation<double>(int(patch.points.size()), patch.faces, lengths).make_delaunay();
+    return intrinsic_triangulation_of(patch).make_delaunay();
   };
   const std::size_t before = flips();
   const std::size_t replaced = CR::internal::welding::retriangulate_coplanar_regions(patch);
@@ -600,12 +616,7 @@ TEST(ConformalFlatten, CoplanarRegionsOfACadPartNeedFewFlips)
   for(std::size_t f = 0; f < patch.faces.size(); ++f)
   {
     const std::array<double, 3> centroid{{1. / 3, 1. / 3, 1. / 3}};
-    const auto location = patch.input_location(int(f), centroid);
-    const CR::internal::welding::Vec3 x = patch.point_in_face(int(f), centroid);
-    const auto h = arm.halfedge(Mesh::Face_index(Mesh::size_type(location.first)));
-    const K::Point_3 y = CGAL::barycenter(arm.point(arm.source(h)), location.second[0], arm.point(arm.target(h)), location.second[1],
-                                          arm.point(arm.target(arm.next(h))), location.second[2]);
-    ASSERT_LT(std::sqrt(CGAL::squared_distance(y, K::Point_3(x[0], x[1], x[2]))), 1e-9) << "face " << f;
+    ASSERT_LT(distance_to_located_input_point(arm, patch, f, centroid), 1e-9) << "face " << f;
   }
 }
 
@@ -626,12 +637,7 @@ TEST(ConformalFlatten, GridPointsInCoplanarRegionsSpareTheRefinementItsFlips)
     patch = CR::internal::welding::make_indexed_patch(arm, get(CGAL::vertex_point, arm), get(CGAL::vertex_index, arm),
                                                       get(CGAL::face_index, arm));
     CR::internal::welding::retriangulate_coplanar_regions(patch, spacing);
-    std::vector<std::array<double, 3> > lengths;
-    for(const auto& f : patch.faces)
-      lengths.push_back({{CR::internal::welding::distance(patch.points[f[0]], patch.points[f[1]]),
-                          CR::internal::welding::distance(patch.points[f[1]], patch.points[f[2]]),
-                          CR::internal::welding::distance(patch.points[f[2]], patch.points[f[0]])}});
-    CR::Intrinsic_triangulation<double> tri(int(patch.points.size()), patch.faces, lengths);
+    CR::Intrinsic_triangulation<double> tri = intrinsic_triangulation_of(patch);
     std::size_t splits = 0;
     EXPECT_TRUE(CR::internal::split_long_patch_edges(tri, patch.faces.size(), maximum_length, 1000000, splits));
     return std::make_pair(tri.number_of_flips(), splits);
@@ -648,12 +654,7 @@ TEST(ConformalFlatten, GridPointsInCoplanarRegionsSpareTheRefinementItsFlips)
     for(const std::array<double, 3>& b : {std::array<double, 3>{{1. / 3, 1. / 3, 1. / 3}}, std::array<double, 3>{{1., 0., 0.}},
                                          std::array<double, 3>{{0., 1., 0.}}, std::array<double, 3>{{0., 0., 1.}}})
     {
-      const auto location = with.input_location(int(f), b);
-      const CR::internal::welding::Vec3 x = with.point_in_face(int(f), b);
-      const auto h = arm.halfedge(Mesh::Face_index(Mesh::size_type(location.first)));
-      const K::Point_3 y = CGAL::barycenter(arm.point(arm.source(h)), location.second[0], arm.point(arm.target(h)), location.second[1],
-                                            arm.point(arm.target(arm.next(h))), location.second[2]);
-      ASSERT_LT(std::sqrt(CGAL::squared_distance(y, K::Point_3(x[0], x[1], x[2]))), 1e-9) << "face " << f;
+      ASSERT_LT(distance_to_located_input_point(arm, with, f, b), 1e-9) << "face " << f;
     }
 }
 
