@@ -442,7 +442,7 @@ inline bool split_long_patch_edges(Intrinsic_triangulation<double>& tri, std::si
 ///     \cgalParamDefault{0.3 (measured by the welding_parameters benchmark)}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{maximum_edge_length}
-///     \cgalParamDescription{edges of the patch longer than this are split at their midpoints in its intrinsic Delaunay triangulation before the flow (each new vertex lies exactly on the surface), until none is left, so that the conformal factor is resolved at that length and long CAD slivers do not shear the map (`Conformal_remeshing::parameters::maximum_edge_length()`)}
+///     \cgalParamDescription{edges of the patch longer than this are split at their midpoints in its intrinsic Delaunay triangulation before the flow (each new vertex lies exactly on the surface), until none is left, so that the conformal factor is resolved at that length and long CAD slivers do not shear the map; sets of at least 16 coplanar faces get the points of a square grid of side 1/1.5 of it first, in their constrained Delaunay retriangulation (`Conformal_remeshing::parameters::maximum_edge_length()`)}
 ///     \cgalParamDefault{no splitting}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_iterations}
