@@ -14,7 +14,7 @@
 #include <CGAL/Conformal_remeshing/discrete_ricci_flow.h>
 #include <CGAL/Conformal_remeshing/internal/named_parameters.h>
 #include <CGAL/Conformal_remeshing/internal/time_limit.h>
-#include <CGAL/Conformal_remeshing/internal/welding/retriangulate_coplanar_regions.h>
+#include <CGAL/Conformal_remeshing/internal/welding/retriangulate_flat_regions.h>
 #include <CGAL/Conformal_remeshing/internal/welding/weld.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -556,7 +556,7 @@ Conformal_flattening conformal_flatten(const TriangleMesh& mesh,
     // (A planar patch is not flipped: its own triangles are laid out.) Grid points inside the
     // coplanar regions at 1/1.5 of the maximum length: the diagonals of their squares are short
     // enough not to be split.
-    report.retriangulated_faces = internal::welding::retriangulate_coplanar_regions(patch, maximum_length / 1.5);
+    report.retriangulated_faces = internal::welding::retriangulate_flat_regions(patch, maximum_length / 1.5);
   }
 
   internal::welding::Welded_disc disc = planar ? internal::welding::unwelded_disc(patch)

@@ -11,7 +11,7 @@
 #include <CGAL/Conformal_remeshing/Error.h>
 #include <CGAL/Conformal_remeshing/internal/welding/annulus.h>
 #include <CGAL/Conformal_remeshing/internal/welding/constrained_domain.h>
-#include <CGAL/Conformal_remeshing/internal/welding/coplanar_region.h>
+#include <CGAL/Conformal_remeshing/internal/welding/flat_region.h>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -45,10 +45,14 @@ inline Vec3 operator/(const Vec3& a, double s) { return {{a[0] / s, a[1] / s, a[
 inline double norm(const Vec3& a) { return std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]); }
 inline double distance(const Vec3& a, const Vec3& b) { return norm(a - b); }
 
+/// A hash key of the edge from vertex `a` to vertex `b`, and of the edge between them.
+inline std::uint64_t directed_key(int a, int b) { return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b); }
+inline std::uint64_t undirected_key(int a, int b) { return directed_key((std::min)(a, b), (std::max)(a, b)); }
+
 /// A copy of the patch as indices, which welding may refine: boundary edges are split at their
-/// midpoints, exactly on the input edge, and coplanar regions retriangulated
-/// (retriangulate_coplanar_regions.h). Every face remembers the input face it lies in and the
-/// barycentric coordinates of its corners there, or the coplanar region it lies in, so that
+/// midpoints, exactly on the input edge, and flat regions retriangulated
+/// (retriangulate_flat_regions.h). Every face remembers the input face it lies in and the
+/// barycentric coordinates of its corners there, or the flat region it lies in, so that
 /// points map back to the input exactly.
 struct Indexed_patch
 {
@@ -57,7 +61,10 @@ struct Indexed_patch
   std::vector<std::array<int, 3> > faces;           // counterclockwise
   std::vector<int> input_face;                      // the input face each face lies in, or -1 - region
   std::vector<std::array<Vec3, 3> > input_coordinates; // barycentric coordinates of the corners there
-  std::vector<Coplanar_region> coplanar_regions;
+  std::vector<Flat_region> flat_regions;
+  /// the intrinsic lengths of the edges inside developed flat regions (across a bend, the
+  /// straight line of the unfolding is longer than the chord in space)
+  std::unordered_map<std::uint64_t, double> developed_lengths;
   /// Boundary loops as vertex cycles in the order of the border halfedges: the missing face of
   /// the edge (loop[i], loop[i+1]) lies on its left.
   std::vector<std::vector<int> > boundary_loops;
@@ -70,14 +77,35 @@ struct Indexed_patch
     return length;
   }
 
-  /// The 3D point at barycentric coordinates `b` of face `f`.
+  /// The length of the edge between vertices `a` and `b` on the surface.
+  double edge_length(int a, int b) const
+  {
+    if(!developed_lengths.empty())
+    {
+      const auto it = developed_lengths.find(undirected_key(a, b));
+      if(it != developed_lengths.end())
+        return it->second;
+    }
+    return distance(points[a], points[b]);
+  }
+
+  /// The 3D point at barycentric coordinates `b` of face `f` (in a developed region, of the
+  /// original face holding it: the new face's chord plane cuts through a bend).
   Vec3 point_in_face(int f, const std::array<double, 3>& b) const
   {
-    Vec3 p{{0., 0., 0.}};
-    for(int c = 0; c < 3; ++c)
-      for(int k = 0; k < 3; ++k)
-        p[k] += b[c] * points[faces[f][c]][k];
-    return p;
+    if(input_face[f] < 0)
+    {
+      const Flat_region& region = flat_regions[std::size_t(-1 - input_face[f])];
+      if(region.developed)
+      {
+        const std::pair<int, std::array<double, 3> > old = region.locate(faces[f], b);
+        std::array<int, 3> corners;
+        for(int c = 0; c < 3; ++c)
+          corners[c] = region.vertices[region.faces[old.first][c]];
+        return point_at(corners, old.second);
+      }
+    }
+    return point_at(faces[f], b);
   }
 
   /// The input face and barycentric coordinates of the point at `b` in face `f`.
@@ -85,7 +113,7 @@ struct Indexed_patch
   {
     if(input_face[f] >= 0)
       return {input_face[f], interpolate(input_coordinates[f], b)};
-    const Coplanar_region& region = coplanar_regions[std::size_t(-1 - input_face[f])];
+    const Flat_region& region = flat_regions[std::size_t(-1 - input_face[f])];
     const std::pair<int, std::array<double, 3> > old = region.locate(faces[f], b);
     return {region.input_face[old.first], interpolate(region.input_coordinates[old.first], old.second)};
   }
@@ -103,6 +131,15 @@ struct Indexed_patch
   }
 
 private:
+  Vec3 point_at(const std::array<int, 3>& corners, const std::array<double, 3>& b) const
+  {
+    Vec3 p{{0., 0., 0.}};
+    for(int c = 0; c < 3; ++c)
+      for(int k = 0; k < 3; ++k)
+        p[k] += b[c] * points[corners[c]][k];
+    return p;
+  }
+
   static std::array<double, 3> interpolate(const std::array<Vec3, 3>& corners, const std::array<double, 3>& b)
   {
     std::array<double, 3> q{{0., 0., 0.}};
@@ -224,10 +261,6 @@ struct Welded_disc
   std::vector<std::pair<int, int> > seams;     // welded loop and hole loop edges
   double scale = 1.;                           // welded length = 3D length * scale
 };
-
-/// A hash key of the edge from vertex `a` to vertex `b`, and of the edge between them.
-inline std::uint64_t directed_key(int a, int b) { return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b); }
-inline std::uint64_t undirected_key(int a, int b) { return directed_key((std::min)(a, b), (std::max)(a, b)); }
 
 inline double dot(const Vec3& a, const Vec3& b) { return a[0] * b[0] + a[1] * b[1] + a[2] * b[2]; }
 inline Vec3 cross(const Vec3& a, const Vec3& b)
@@ -412,7 +445,7 @@ inline Welded_disc weld(const Indexed_patch& patch, std::size_t welded, double i
   Welded_disc disc;
   const double radius = inscribing_radius(seam_lengths);
   disc.scale = 1. / radius;
-  auto length = [&](int a, int b) { return disc.scale * distance(patch.points[a], patch.points[b]); };
+  auto length = [&](int a, int b) { return disc.scale * patch.edge_length(a, b); };
 
   for(const auto& f : patch.faces)
   {

@@ -1,11 +1,11 @@
 // Copyright (c) 2026 CGAL Conformal Remeshing contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// A set of exactly coplanar faces of a patch that was retriangulated (see
-// retriangulate_coplanar_regions.h): its original faces are kept to locate points in them.
+// A flat set of faces of a patch that was retriangulated (see
+// retriangulate_flat_regions.h): its original faces are kept to locate points in them.
 
-#ifndef CGAL_CONFORMAL_REMESHING_INTERNAL_WELDING_COPLANAR_REGION_H
-#define CGAL_CONFORMAL_REMESHING_INTERNAL_WELDING_COPLANAR_REGION_H
+#ifndef CGAL_CONFORMAL_REMESHING_INTERNAL_WELDING_FLAT_REGION_H
+#define CGAL_CONFORMAL_REMESHING_INTERNAL_WELDING_FLAT_REGION_H
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
@@ -20,18 +20,24 @@ namespace Conformal_remeshing {
 namespace internal {
 namespace welding {
 
-/// A region of exactly coplanar faces, projected exactly to a coordinate plane (one coordinate
-/// dropped, the other two kept as they are, one of them negated if need be so that the faces are
-/// counterclockwise). Locating a point among the original faces walks along a straight line from
-/// a vertex, in exact predicates; the walk starts from the corner of the query's new face that
-/// reaches the point through the fewest original faces (a CAD fan is crossed by no walk from its
-/// apex and by many from elsewhere), tried with growing step budgets.
-struct Coplanar_region
+/// A region of faces of a patch laid flat in the plane that was retriangulated (see
+/// retriangulate_flat_regions.h): exactly coplanar faces projected exactly to a coordinate plane
+/// (one coordinate dropped, the other two kept as they are, one of them negated if need be so
+/// that the faces are counterclockwise), or a developable set of faces (a bend between planar
+/// faces, a cylinder strip) unfolded isometrically. Locating a point among the original faces
+/// walks along a straight line from a vertex, in exact predicates; the walk starts from the
+/// corner of the query's new face that reaches the point through the fewest original faces (a
+/// CAD fan is crossed by no walk from its apex and by many from elsewhere), tried with growing
+/// step budgets.
+struct Flat_region
 {
   typedef Epick::Point_2 Point_2;
 
   std::vector<int> vertices;                 // patch vertex indices, sorted
-  std::vector<Point_2> points;               // their projections
+  std::vector<Point_2> points;               // their projections or unfolded positions
+  /// whether the region was unfolded rather than projected: its new faces are not in space
+  /// where its original faces are, so a point of a new face is located in an original one
+  bool developed = false;
   std::vector<std::array<int, 3> > faces;    // the original faces, as indices into `vertices`
   std::vector<std::array<int, 3> > neighbor; // the face across side (c, c+1), or -1
   std::vector<int> fan_start, fan;           // faces around each vertex, counterclockwise
@@ -261,4 +267,4 @@ private:
 } // namespace Conformal_remeshing
 } // namespace CGAL
 
-#endif // CGAL_CONFORMAL_REMESHING_INTERNAL_WELDING_COPLANAR_REGION_H
+#endif // CGAL_CONFORMAL_REMESHING_INTERNAL_WELDING_FLAT_REGION_H
