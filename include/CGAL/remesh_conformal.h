@@ -79,8 +79,8 @@ struct Remeshing_report
   int max_newton_iterations = 0;
   double max_curvature_error = 0.;
   std::size_t flips = 0;
-  /// faces of exactly coplanar regions replaced by their constrained Delaunay triangulation
-  /// before the flips (`Flattening_report::retriangulated_faces`, summed)
+  /// faces of flat regions (developable or exactly coplanar) replaced by their constrained
+  /// Delaunay triangulation before the flips (`Flattening_report::retriangulated_faces`, summed)
   std::size_t retriangulated_faces = 0;
   double max_scale_ratio = 0.; ///< the largest ratio of the local scales in a patch
   std::size_t boundary_curves = 0;

@@ -76,8 +76,9 @@ struct Flattening_report
   std::size_t boundary_splits = 0;
   /// intrinsic edges split at their midpoints because they were longer than `maximum_edge_length`
   std::size_t edge_splits = 0;
-  /// faces of exactly coplanar regions replaced by their constrained Delaunay triangulation
-  /// before the flips (a CAD fan of slivers needs a number of flips quadratic in its size)
+  /// faces of flat regions (developable or exactly coplanar) replaced by their constrained
+  /// Delaunay triangulation in the plane before the flips (a CAD fan of slivers needs a number
+  /// of flips quadratic in its size)
   std::size_t retriangulated_faces = 0;
   std::size_t welded_vertices = 0;  ///< vertices of the welded disc (patch, fills, annulus)
   /// sides shortened by about 1e-14 of their length to open faces that are flat in double
@@ -161,7 +162,7 @@ struct Conformal_flattening
   }
 
   /// The surface point at a patch location alone, without locating it in an input face (which
-  /// takes a walk in a retriangulated coplanar region).
+  /// takes a walk in a retriangulated flat region; a developed one takes it for the point too).
   Epick::Point_3 surface_point(const Patch_location& l) const
   {
     const internal::welding::Vec3 x = patch.point_in_face(l.first, l.second);
@@ -422,9 +423,11 @@ inline bool split_long_patch_edges(Intrinsic_triangulation<double>& tri, std::si
 /// with a convex boundary is an embedding, so the patch region is embedded, which is then
 /// verified with exact predicates. Welded loop edges longer than 1/32 of the loop are split at
 /// their midpoints first (exactly on the input edges), and every edge-connected set of at least
-/// 16 exactly coplanar faces (a CAD fan of slivers) is replaced by its constrained Delaunay
-/// triangulation, whose Delaunay flips do not grow with the square of the fan; points in such a
-/// region are still located in their input faces (`Flattening_report::retriangulated_faces`).
+/// 16 faces that unfolds into the plane isometrically (CAD fans of slivers on planar faces, and
+/// the bends between them, not across edges turning by 30 degrees or more) or that are exactly
+/// coplanar is replaced by its constrained Delaunay triangulation in the plane, whose Delaunay
+/// flips do not grow with the square of the fans; points in such a region are still located in
+/// their input faces (`Flattening_report::retriangulated_faces`).
 ///
 /// \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
 ///
@@ -442,7 +445,7 @@ inline bool split_long_patch_edges(Intrinsic_triangulation<double>& tri, std::si
 ///     \cgalParamDefault{0.3 (measured by the welding_parameters benchmark)}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{maximum_edge_length}
-///     \cgalParamDescription{edges of the patch longer than this are split at their midpoints in its intrinsic Delaunay triangulation before the flow (each new vertex lies exactly on the surface), until none is left, so that the conformal factor is resolved at that length and long CAD slivers do not shear the map; sets of at least 16 coplanar faces get the points of a square grid of side 1/1.5 of it first, in their constrained Delaunay retriangulation (`Conformal_remeshing::parameters::maximum_edge_length()`)}
+///     \cgalParamDescription{edges of the patch longer than this are split at their midpoints in its intrinsic Delaunay triangulation before the flow (each new vertex lies exactly on the surface), until none is left, so that the conformal factor is resolved at that length and long CAD slivers do not shear the map; flat regions of at least 16 faces (developable or coplanar) get the points of a square grid of side 1/1.5 of it first, in their constrained Delaunay retriangulation (`Conformal_remeshing::parameters::maximum_edge_length()`)}
 ///     \cgalParamDefault{no splitting}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_iterations}

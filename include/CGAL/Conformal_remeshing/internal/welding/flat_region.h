@@ -82,6 +82,17 @@ struct Flat_region
     return {face, coordinates(face, p)};
   }
 
+  /// The original face holding `p`, walking from `s`, a point of original face `f` (a point
+  /// located before, near `p`), and `p`'s barycentric coordinates there; face -1 if the walk
+  /// fails (it runs through a vertex, or leaves the region: a hole lies between `s` and `p`).
+  std::pair<int, std::array<double, 3> > locate_point_from(int f, const Point_2& s, const Point_2& p) const
+  {
+    const int face = walk_from_inside(f, s, p, 4 * faces.size() + 64);
+    if(face < 0 || !holds(face, p))
+      return {-1, {{0., 0., 0.}}};
+    return {face, coordinates(face, p)};
+  }
+
 private:
   bool is_added(int v) const { return std::size_t(v) < containing_face.size() && containing_face[v] >= 0; }
 

@@ -111,14 +111,23 @@ std::vector<Vec3> add_interior_points(CDT& cdt, Flat_region& region, double spac
       hint = f;
       if(type != CDT::FACE || f->info() % 2 != 1)
         continue;
-      std::array<int, 3> corners;
-      for(int c = 0; c < 3; ++c)
-        corners[c] = f->vertex(c)->info();
-      added.push_back(Added{p, typename CDT::Vertex_handle(), region.locate_point(corners, p)});
+      // Walk from the grid point before, a few original faces away in the same row (from the
+      // new face's corners, a walk may cross a CAD fan or a bend's strip of slivers lengthwise).
+      std::pair<int, std::array<double, 3> > original(-1, {});
+      if(!added.empty())
+        original = region.locate_point_from(added.back().original.first, added.back().point, p);
+      if(original.first < 0)
+      {
+        std::array<int, 3> corners;
+        for(int c = 0; c < 3; ++c)
+          corners[c] = f->vertex(c)->info();
+        original = region.locate_point(corners, p);
+      }
+      added.push_back(Added{p, typename CDT::Vertex_handle(), original});
     }
   for(std::size_t k = 0; k < added.size(); ++k) // after the walks, which start from the triangulation's vertices
   {
-    added[k].vertex = cdt.insert(added[k].point);
+    added[k].vertex = k == 0 ? cdt.insert(added[k].point) : cdt.insert(added[k].point, added[k - 1].vertex->face());
     added[k].vertex->info() = -1;
   }
   // Too near the boundary: a constrained side of a face around it is closer than a third of spacing.
