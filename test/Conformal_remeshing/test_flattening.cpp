@@ -546,6 +546,23 @@ double distance_to_located_input_point(const Mesh& input, const CR::internal::we
   return std::sqrt(CGAL::squared_distance(input_point(input, std::size_t(location.first), location.second), K::Point_3(x[0], x[1], x[2])));
 }
 
+// The whole of `mesh` as an indexed patch (its faces not retriangulated yet).
+CR::internal::welding::Indexed_patch indexed_patch_of(const Mesh& mesh)
+{
+  return CR::internal::welding::make_indexed_patch(mesh, get(CGAL::vertex_point, mesh), get(CGAL::vertex_index, mesh),
+                                                   get(CGAL::face_index, mesh));
+}
+
+// A paper-scale model of issue #7 at a test's size.
+Mesh small_paper_model(bm::Paper_model model, std::size_t vertices)
+{
+  Mesh mesh;
+  bm::Paper_model_parameters p;
+  p.target_vertices = vertices;
+  bm::make_paper_model(mesh, model, p);
+  return mesh;
+}
+
 // The intrinsic triangulation of a patch's faces with the lengths of their edges on the surface
 // (`developed`) or of their chords in space.
 CR::Intrinsic_triangulation<double> intrinsic_triangulation_of(const CR::internal::welding::Indexed_patch& patch,
@@ -639,12 +656,8 @@ TEST(ConformalFlatten, CoplanarRegionsOfACadPartNeedFewFlips)
 {
   // The 10k suspension arm: its planar faces are fans whose Delaunay flips are most of the
   // flattening's time at scale (issue #7: 92 million at 316k vertices).
-  Mesh arm;
-  bm::Paper_model_parameters p;
-  p.target_vertices = 10000;
-  bm::make_suspension_arm(arm, p);
-  CR::internal::welding::Indexed_patch patch =
-    CR::internal::welding::make_indexed_patch(arm, get(CGAL::vertex_point, arm), get(CGAL::vertex_index, arm), get(CGAL::face_index, arm));
+  const Mesh arm = small_paper_model(bm::Paper_model::suspension_arm, 10000);
+  CR::internal::welding::Indexed_patch patch = indexed_patch_of(arm);
   auto flips = [&] {
     return intrinsic_triangulation_of(patch).make_delaunay();
   };
@@ -668,12 +681,8 @@ TEST(ConformalFlatten, BendsUnfoldWithThePlanarFacesAroundThemIntoOneRegion)
   // joined by bends tessellated as strips of slivers spanning the rail's length) is developable.
   // Retriangulating the planar faces alone left the flips between them and the bends, 17.8
   // million on the full-scale rail.
-  Mesh rail;
-  bm::Paper_model_parameters p;
-  p.target_vertices = 20000;
-  bm::make_chassis(rail, p);
-  CR::internal::welding::Indexed_patch patch =
-    CR::internal::welding::make_indexed_patch(rail, get(CGAL::vertex_point, rail), get(CGAL::vertex_index, rail), get(CGAL::face_index, rail));
+  const Mesh rail = small_paper_model(bm::Paper_model::chassis, 20000);
+  CR::internal::welding::Indexed_patch patch = indexed_patch_of(rail);
   const std::size_t before = intrinsic_triangulation_of(patch).make_delaunay();
   CR::internal::welding::retriangulate_flat_regions(patch);
   // The two sides of the section, each one region unfolded across its four bends.
@@ -693,8 +702,7 @@ TEST(ConformalFlatten, BendsUnfoldWithThePlanarFacesAroundThemIntoOneRegion)
   // With grid points (every 3 mm in a 1600 mm rail), as the flattening adds them, every corner
   // and centroid of the new faces lies in the input face it is located in (in a developed
   // region, the point is placed in the original face holding it in the unfolding).
-  patch = CR::internal::welding::make_indexed_patch(rail, get(CGAL::vertex_point, rail), get(CGAL::vertex_index, rail),
-                                                    get(CGAL::face_index, rail));
+  patch = indexed_patch_of(rail);
   CR::internal::welding::retriangulate_flat_regions(patch, 3.);
   EXPECT_GT(patch.points.size(), num_vertices(rail) + 10000);
   for(std::size_t f = 0; f < patch.faces.size(); ++f)
@@ -711,16 +719,12 @@ TEST(ConformalFlatten, GridPointsInCoplanarRegionsSpareTheRefinementItsFlips)
   // triangulation (its vertices all on its outline) one at a time, with two dozen flips each on
   // issue #7's arm, and every point pulled back walked back through them. Grid points added in
   // the plane leave it little to do there, and lie on the input faces they are located in.
-  Mesh arm;
-  bm::Paper_model_parameters p;
-  p.target_vertices = 10000;
-  bm::make_suspension_arm(arm, p);
+  const Mesh arm = small_paper_model(bm::Paper_model::suspension_arm, 10000);
   const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(arm);
   const double maximum_length = 0.02 * std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin())
                                                  + CGAL::square(box.zmax() - box.zmin()));
   auto refinement = [&](double spacing, CR::internal::welding::Indexed_patch& patch) {
-    patch = CR::internal::welding::make_indexed_patch(arm, get(CGAL::vertex_point, arm), get(CGAL::vertex_index, arm),
-                                                      get(CGAL::face_index, arm));
+    patch = indexed_patch_of(arm);
     CR::internal::welding::retriangulate_flat_regions(patch, spacing);
     CR::Intrinsic_triangulation<double> tri = intrinsic_triangulation_of(patch);
     std::size_t splits = 0;
