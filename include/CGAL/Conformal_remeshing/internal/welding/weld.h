@@ -27,8 +27,8 @@
 #include <limits>
 #include <map>
 #include <numeric>
-#include <set>
 #include <unordered_map>
+#include <unordered_set>
 #include <utility>
 #include <vector>
 
@@ -455,7 +455,7 @@ inline Welded_disc weld(const Indexed_patch& patch, std::size_t welded, double i
   disc.patch_faces = patch.faces.size();
   int next_vertex = int(patch.points.size());
 
-  std::set<std::pair<int, int> > patch_edges; // smaller vertex first; made for the first polygon fill
+  std::unordered_set<std::uint64_t> patch_edges; // undirected keys; made for the first polygon fill
   // A fill per hole: a cone vertex lifted off the hole along its normal so that no fan triangle
   // is flat, or the loop's polygon triangulated.
   for(std::size_t l = 0; l < patch.boundary_loops.size(); ++l)
@@ -501,14 +501,14 @@ inline Welded_disc weld(const Indexed_patch& patch, std::size_t welded, double i
       if(patch_edges.empty())
         for(const auto& f : patch.faces)
           for(int c = 0; c < 3; ++c)
-            patch_edges.insert(std::minmax(f[c], f[(c + 1) % 3]));
-      std::set<std::pair<int, int> > loop_edges;
+            patch_edges.insert(undirected_key(f[c], f[(c + 1) % 3]));
+      std::unordered_set<std::uint64_t> loop_edges; // directed, in the loop's order
       for(std::size_t i = 0; i < loop.size(); ++i)
-        loop_edges.insert({loop[i], loop[(i + 1) % loop.size()]});
+        loop_edges.insert(directed_key(loop[i], loop[(i + 1) % loop.size()]));
       for(const auto& f : flat_fill)
         for(int c = 0; c < 3; ++c)
-          if(!loop_edges.count({f[c], f[(c + 1) % 3]}))
-            doubles_an_edge = doubles_an_edge || patch_edges.count(std::minmax(f[c], f[(c + 1) % 3]));
+          if(!loop_edges.count(directed_key(f[c], f[(c + 1) % 3])))
+            doubles_an_edge = doubles_an_edge || patch_edges.count(undirected_key(f[c], f[(c + 1) % 3]));
     }
     if(!flat_fill.empty() && !doubles_an_edge)
     {
