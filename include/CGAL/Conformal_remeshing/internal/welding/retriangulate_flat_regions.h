@@ -325,7 +325,8 @@ private:
     unfolded[s[0]] = Point_2(0., 0.);
     unfolded[s[1]] = Point_2(distance(patch_.points[s[0]], patch_.points[s[1]]), 0.);
     unfolded[s[2]] = unfold_apex(unfolded[s[0]], unfolded[s[1]], s[0], s[1], s[2]);
-    if(CGAL::orientation(unfolded[s[0]], unfolded[s[1]], unfolded[s[2]]) != CGAL::POSITIVE)
+    if(!is_finite(unfolded[s[1]]) || !is_finite(unfolded[s[2]])
+       || CGAL::orientation(unfolded[s[0]], unfolded[s[1]], unfolded[s[2]]) != CGAL::POSITIVE)
     {
       grown_by_[seed] = seed;
       return {};
@@ -349,7 +350,9 @@ private:
       const int p = t[(c + 1) % 3], q = t[(c + 2) % 3], w = t[c];
       const Point_2 at = unfold_apex(unfolded[p], unfolded[q], p, q, w);
       const auto known = unfolded.find(w);
-      if(known != unfolded.end() && CGAL::squared_distance(known->second, at) > CGAL::square(unfolding_tolerance_))
+      if(!is_finite(at)) // lengths whose squares overflow: left as they are
+        consistent = false;
+      else if(known != unfolded.end() && CGAL::squared_distance(known->second, at) > CGAL::square(unfolding_tolerance_))
         consistent = false;
       else if(CGAL::orientation(unfolded[p], unfolded[q], known != unfolded.end() ? known->second : at) != CGAL::POSITIVE)
         consistent = false;
@@ -361,6 +364,8 @@ private:
       region.clear();
     return region;
   }
+
+  static bool is_finite(const Point_2& p) { return std::isfinite(p.x()) && std::isfinite(p.y()); }
 
   // The position in the plane of vertex `w` of the face (p, q, w), p and q unfolded at `at_p` and
   // `at_q`: where its foot on the line pq and its distance from it put it, on the left. (From
