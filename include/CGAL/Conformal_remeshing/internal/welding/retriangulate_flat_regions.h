@@ -197,15 +197,16 @@ public:
   }
   Epick::Point_2 operator()(int v) const
   {
-    const double x = patch_.points[v][(dropped_ + 1) % 3], y = patch_.points[v][(dropped_ + 2) % 3];
-    return Epick::Point_2(mirrored_ ? -x : x, y);
+    const Epick::Point_2 p = raw(v);
+    return mirrored_ ? Epick::Point_2(-p.x(), p.y()) : p;
   }
 
 private:
   Epick::Point_3 point(int v) const { return Epick::Point_3(patch_.points[v][0], patch_.points[v][1], patch_.points[v][2]); }
+  // v with the dropped coordinate dropped, not mirrored
+  Epick::Point_2 raw(int v) const { return Epick::Point_2(patch_.points[v][(dropped_ + 1) % 3], patch_.points[v][(dropped_ + 2) % 3]); }
   CGAL::Orientation raw_orientation(const std::array<int, 3>& f) const
   {
-    auto raw = [&](int v) { return Epick::Point_2(patch_.points[v][(dropped_ + 1) % 3], patch_.points[v][(dropped_ + 2) % 3]); };
     return CGAL::orientation(raw(f[0]), raw(f[1]), raw(f[2]));
   }
 
@@ -242,14 +243,7 @@ public:
         face_of_.emplace(directed_key(patch.faces[f][c], patch.faces[f][(c + 1) % 3]), f);
         edges_.insert(undirected_key(patch.faces[f][c], patch.faces[f][(c + 1) % 3]));
       }
-    Vec3 low = patch.points.front(), high = low;
-    for(const Vec3& p : patch.points)
-      for(int k = 0; k < 3; ++k)
-      {
-        low[k] = (std::min)(low[k], p[k]);
-        high[k] = (std::max)(high[k], p[k]);
-      }
-    unfolding_tolerance_ = 1e-9 * distance(low, high);
+    unfolding_tolerance_ = 1e-9 * patch.diagonal();
   }
 
   // Developable regions first, unfolded (those that turn out exactly coplanar are projected),
@@ -348,13 +342,14 @@ private:
         return false;
       }
       const int p = t[(c + 1) % 3], q = t[(c + 2) % 3], w = t[c];
-      const Point_2 at = unfold_apex(unfolded[p], unfolded[q], p, q, w);
+      const Point_2 &at_p = unfolded.at(p), &at_q = unfolded.at(q); // g's side shared with f, unfolded with f
+      const Point_2 at = unfold_apex(at_p, at_q, p, q, w);
       const auto known = unfolded.find(w);
       if(!is_finite(at)) // lengths whose squares overflow: left as they are
         consistent = false;
       else if(known != unfolded.end() && CGAL::squared_distance(known->second, at) > CGAL::square(unfolding_tolerance_))
         consistent = false;
-      else if(CGAL::orientation(unfolded[p], unfolded[q], known != unfolded.end() ? known->second : at) != CGAL::POSITIVE)
+      else if(CGAL::orientation(at_p, at_q, known != unfolded.end() ? known->second : at) != CGAL::POSITIVE)
         consistent = false;
       else if(known == unfolded.end())
         unfolded.emplace(w, at);

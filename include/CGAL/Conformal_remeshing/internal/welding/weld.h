@@ -77,6 +77,19 @@ struct Indexed_patch
     return length;
   }
 
+  /// The diagonal of the points' bounding box.
+  double diagonal() const
+  {
+    Vec3 low = points.front(), high = low;
+    for(const Vec3& p : points)
+      for(int k = 0; k < 3; ++k)
+      {
+        low[k] = (std::min)(low[k], p[k]);
+        high[k] = (std::max)(high[k], p[k]);
+      }
+    return distance(high, low);
+  }
+
   /// The length of the edge between vertices `a` and `b` on the surface.
   double edge_length(int a, int b) const
   {
@@ -298,14 +311,7 @@ inline Vec3 largest_face_normal(const Indexed_patch& patch)
 inline bool is_planar(const Indexed_patch& patch)
 {
   const Vec3 normal = largest_face_normal(patch);
-  Vec3 low = patch.points.front(), high = patch.points.front();
-  for(const Vec3& p : patch.points)
-    for(int k = 0; k < 3; ++k)
-    {
-      low[k] = (std::min)(low[k], p[k]);
-      high[k] = (std::max)(high[k], p[k]);
-    }
-  const double diagonal = distance(high, low);
+  const double diagonal = patch.diagonal();
   if(!(dot(normal, normal) > 0.))
     return false;
   const double unit = norm(normal);
