@@ -255,18 +255,27 @@ public:
   {
     Conformal_flattening::Patch_location on_patch;
     bool clamped; // outside every flat triangle by rounding, moved onto the nearest one
+    std::size_t triangle; // the flat triangle it was located in
   };
 
   Remembering_surface_map(const Conformal_flattening& flat, const Planar_locator& locator) : flat_(flat), locator_(locator) {}
 
-  const Lifted& lift(const Epick::Point_2& p)
+  /// The lift of `p`; `near` (optional) is a point lifted before close to `p`: the walk that
+  /// locates `p` in the flat triangles starts from its triangle (else from the last point's).
+  const Lifted& lift(const Epick::Point_2& p, const Epick::Point_2* near = nullptr)
   {
     const auto inserted = lifted_.emplace(std::make_pair(p.x(), p.y()), Lifted());
     if(inserted.second)
     {
-      const Planar_locator::Location l = locator_.locate(p);
+      if(near != nullptr)
+      {
+        const auto known = lifted_.find(std::make_pair(near->x(), near->y()));
+        if(known != lifted_.end())
+          hint_ = known->second.triangle;
+      }
+      const Planar_locator::Location l = locator_.locate(p, hint_);
       inserted.first->second = Lifted{flat_.patch_location_of_triangle(l.triangle, l.coordinates),
-                                      (std::min)({l.coordinates[0], l.coordinates[1], l.coordinates[2]}) == 0.};
+                                      (std::min)({l.coordinates[0], l.coordinates[1], l.coordinates[2]}) == 0., l.triangle};
     }
     return inserted.first->second;
   }
@@ -281,6 +290,7 @@ private:
   };
   const Conformal_flattening& flat_;
   const Planar_locator& locator_;
+  std::size_t hint_ = Planar_locator::no_hint; // the last point's triangle: lifts come in neighbourhoods
   std::unordered_map<std::pair<double, double>, Lifted, Hash> lifted_;
 };
 
@@ -297,8 +307,9 @@ inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, c
   Clock::time_point start = Clock::now();
   Remeshed_patch result;
   const Planar_locator locator(flat.layout, flat.triangles);
+  std::size_t size_hint = Planar_locator::no_hint; // the refinement asks about neighbouring triangles in turn
   const std::function<double(const Epick::Point_2&)> planar_size = [&](const Epick::Point_2& p) {
-    const Planar_locator::Location l = locator.locate(p);
+    const Planar_locator::Location l = locator.locate(p, size_hint);
     double s = 0.;
     for(int c = 0; c < 3; ++c)
       s += l.coordinates[c] * scale[flat.triangles[l.triangle][c]];
@@ -341,14 +352,16 @@ inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, c
   Remembering_surface_map surface_map(flat, locator);
   if(optimization_rounds > 0)
   {
-    const auto lift = [&](const Epick::Point_2& p) { return flat.surface_point(surface_map.lift(p).on_patch); };
+    const auto lift = [&](const Epick::Point_2& p, const Epick::Point_2& near) {
+      return flat.surface_point(surface_map.lift(p, &near).on_patch);
+    };
     std::vector<Epick::Point_3> positions;
     positions.reserve(planar.points.size());
     for(const auto& loop : loops)
       for(const Boundary_sample& s : loop)
         positions.push_back(s.point);
     for(std::size_t i = planar.number_of_samples; i < planar.points.size(); ++i)
-      positions.push_back(lift(planar.points[i]));
+      positions.push_back(flat.surface_point(surface_map.lift(planar.points[i]).on_patch));
     result.flips = optimize_on_surface(planar.points, positions, planar.triangles, planar.number_of_samples, lift,
                                        min_angle, longest_edge_factor * sizing.target(), optimization_rounds, result.boundary_ids,
                                        diagonals_to_split).flips;

@@ -1,11 +1,15 @@
 // Copyright (c) 2026 CGAL Conformal Remeshing contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Point location in a planar triangulation given as indexed triangles, with a uniform grid of
-// buckets: the pull-back and the sizing field locate every planar point this way.
+// Point location in a planar triangulation given as indexed triangles: a walk from a hint
+// triangle where the caller has one (the refinement's size queries and the optimization's trial
+// moves come one after the other in a neighbourhood), else a uniform grid of buckets. The
+// pull-back and the sizing field locate every planar point this way.
 
 #ifndef CGAL_CONFORMAL_REMESHING_INTERNAL_REMESHING_PLANAR_LOCATOR_H
 #define CGAL_CONFORMAL_REMESHING_INTERNAL_REMESHING_PLANAR_LOCATOR_H
+
+#include <CGAL/Conformal_remeshing/internal/remeshing/triangle_adjacency.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
@@ -32,6 +36,8 @@ public:
     std::array<double, 3> coordinates;
   };
 
+  static constexpr std::size_t no_hint = std::size_t(-1);
+
   Planar_locator(const std::vector<Point_2>& points, const std::vector<std::array<int, 3> >& triangles)
     : points_(points), triangles_(triangles)
   {
@@ -52,6 +58,35 @@ public:
         for(int j = cell_y(b.ymin()); j <= cell_y(b.ymax()); ++j)
           buckets_[std::size_t(j) * std::size_t(nx_) + std::size_t(i)].push_back(t);
     }
+    if(!link_triangles(triangles, neighbor_, [](int, int, bool) {}))
+      neighbor_.clear(); // not a manifold triangulation: no walks, the grid alone
+  }
+
+  /// The same, walking from triangle `hint` toward `p` first (across the side whose barycentric
+  /// coordinate is the most negative); falls back to the grid when the walk leaves the
+  /// triangulation or is long. `hint` becomes the triangle found (`no_hint`: the grid alone).
+  Location locate(const Point_2& p, std::size_t& hint) const
+  {
+    if(hint < neighbor_.size())
+    {
+      std::size_t t = hint;
+      for(int step = 0; step < 16; ++step)
+      {
+        const std::array<double, 3> b = barycentric(t, p);
+        const int k = int(std::min_element(b.begin(), b.end()) - b.begin());
+        if(b[k] >= 0.)
+        {
+          hint = t;
+          return Location{t, b};
+        }
+        if(neighbor_[t][k] < 0)
+          break;
+        t = std::size_t(neighbor_[t][k]);
+      }
+    }
+    const Location l = locate(p);
+    hint = l.triangle;
+    return l;
   }
 
   /// The triangle containing `p`, or, for a point outside every triangle (on the boundary up
@@ -118,6 +153,7 @@ private:
   CGAL::Bbox_2 box_;
   int nx_ = 1, ny_ = 1;
   std::vector<std::vector<std::size_t> > buckets_;
+  std::vector<std::array<int, 3> > neighbor_;
 };
 
 } // namespace remeshing
