@@ -25,6 +25,7 @@
 #include <chrono>
 #include <iostream>
 #include <map>
+#include <random>
 #include <set>
 #include <cmath>
 #include <string>
@@ -369,6 +370,60 @@ TEST(SurfaceOptimization, LeavesANonManifoldInputAsIs)
   EXPECT_FALSE(RM::optimize_on_surface(points, positions, triangles, 0, wavy_lift_near, 28., 1., 3).optimized);
   EXPECT_EQ(points, points_before);
   EXPECT_EQ(triangles, triangles_before);
+}
+
+TEST(PlanarLocator, FindsPointsInDiagonalSliverFansByGridAndByWalks)
+{
+  // A regular 400-gon fanned from one corner (CAD's slivers: 0.45 degrees at the fan's apex),
+  // turned by 37 degrees so that the slivers run diagonally across the grid's cells, which now
+  // hold only the triangles they overlap. Every point inside is found in a triangle that holds
+  // it, by the grid and by walks from any hint; a point outside gets the clamped coordinates of
+  // a nearby triangle.
+  typedef CGAL::Epick::Point_2 P2;
+  const int n = 400;
+  const double turn = 37. * CGAL_PI / 180.;
+  std::vector<P2> points;
+  for(int i = 0; i < n; ++i)
+    points.emplace_back(std::cos(turn + 2. * CGAL_PI * i / n), std::sin(turn + 2. * CGAL_PI * i / n));
+  std::vector<std::array<int, 3> > triangles;
+  for(int i = 1; i + 1 < n; ++i)
+    triangles.push_back({{0, i, i + 1}});
+  const RM::Planar_locator locator(points, triangles);
+  auto holds = [&](const RM::Planar_locator::Location& l, const P2& p) {
+    const std::array<int, 3>& t = triangles[l.triangle];
+    double x = 0., y = 0.;
+    for(int c = 0; c < 3; ++c)
+    {
+      x += l.coordinates[c] * points[t[c]].x();
+      y += l.coordinates[c] * points[t[c]].y();
+    }
+    return *std::min_element(l.coordinates.begin(), l.coordinates.end()) >= -1e-12 && std::hypot(x - p.x(), y - p.y()) < 1e-12;
+  };
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> coordinate(-1., 1.);
+  std::uniform_int_distribution<std::size_t> any_triangle(0, triangles.size() - 1);
+  std::size_t walked_home = 0, inside = 0;
+  for(int k = 0; k < 20000; ++k)
+  {
+    const P2 p(coordinate(random), coordinate(random));
+    if(std::hypot(p.x(), p.y()) > 0.999) // outside the polygon or close to its sides
+      continue;
+    ++inside;
+    const RM::Planar_locator::Location by_grid = locator.locate(p);
+    EXPECT_TRUE(holds(by_grid, p)) << p;
+    std::size_t hint = k % 2 == 0 ? any_triangle(random) : std::size_t(RM::Planar_locator::no_hint);
+    const RM::Planar_locator::Location by_walk = locator.locate(p, hint);
+    EXPECT_TRUE(holds(by_walk, p)) << p;
+    EXPECT_EQ(hint, by_walk.triangle);
+    // From a neighbour's triangle the walk is short and ends where the grid's search ended.
+    std::size_t near = by_grid.triangle + (by_grid.triangle + 1 < triangles.size() ? 1 : -1);
+    walked_home += locator.locate(p, near).triangle == by_grid.triangle;
+  }
+  EXPECT_GT(inside, 14000u);
+  EXPECT_GT(walked_home, inside * 99 / 100);
+  const RM::Planar_locator::Location outside = locator.locate(P2(1.5, 1.5));
+  EXPECT_DOUBLE_EQ(outside.coordinates[0] + outside.coordinates[1] + outside.coordinates[2], 1.);
+  EXPECT_EQ(*std::min_element(outside.coordinates.begin(), outside.coordinates.end()), 0.);
 }
 
 TEST(RemeshConformal, AMillionFacesWithOneBadFaceAreRefusedAtOnce)

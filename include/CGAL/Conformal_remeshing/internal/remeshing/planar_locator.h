@@ -48,16 +48,16 @@ public:
     const double cell = std::sqrt((std::max)(area, 1e-300) / double((std::max<std::size_t>)(triangles.size(), 1)));
     nx_ = (std::max)(1, (std::min)(4096, int((box_.xmax() - box_.xmin()) / cell) + 1));
     ny_ = (std::max)(1, (std::min)(4096, int((box_.ymax() - box_.ymin()) / cell) + 1));
-    buckets_.resize(std::size_t(nx_) * std::size_t(ny_));
+    // Buckets in one array, each cell's triangles in a range of it: counted, then filled.
+    bucket_start_.assign(std::size_t(nx_) * std::size_t(ny_) + 1, 0);
     for(std::size_t t = 0; t < triangles.size(); ++t)
-    {
-      CGAL::Bbox_2 b;
-      for(int v : triangles[t])
-        b += points[v].bbox();
-      for(int i = cell_x(b.xmin()); i <= cell_x(b.xmax()); ++i)
-        for(int j = cell_y(b.ymin()); j <= cell_y(b.ymax()); ++j)
-          buckets_[std::size_t(j) * std::size_t(nx_) + std::size_t(i)].push_back(t);
-    }
+      for_each_cell(t, [&](std::size_t cell) { ++bucket_start_[cell + 1]; });
+    for(std::size_t c = 1; c < bucket_start_.size(); ++c)
+      bucket_start_[c] += bucket_start_[c - 1];
+    bucket_triangles_.resize(bucket_start_.back());
+    std::vector<std::size_t> filled(bucket_start_.begin(), bucket_start_.end() - 1);
+    for(std::size_t t = 0; t < triangles.size(); ++t)
+      for_each_cell(t, [&](std::size_t cell) { bucket_triangles_[filled[cell]++] = t; });
     if(!link_triangles(triangles, neighbor_, [](int, int, bool) {}))
       neighbor_.clear(); // not a manifold triangulation: no walks, the grid alone
   }
@@ -103,8 +103,10 @@ public:
         {
           if(i < 0 || j < 0 || i >= nx_ || j >= ny_ || ((std::max)(std::abs(i - ci), std::abs(j - cj)) != ring))
             continue;
-          for(std::size_t t : buckets_[std::size_t(j) * std::size_t(nx_) + std::size_t(i)])
+          const std::size_t cell = std::size_t(j) * std::size_t(nx_) + std::size_t(i);
+          for(std::size_t k = bucket_start_[cell]; k < bucket_start_[cell + 1]; ++k)
           {
+            const std::size_t t = bucket_triangles_[k];
             const std::array<double, 3> b = barycentric(t, p);
             const double score = (std::min)({b[0], b[1], b[2]});
             if(score > best_score)
@@ -130,6 +132,47 @@ public:
   }
 
 private:
+  // Calls `f` with every cell that triangle `t` overlaps, row by row from the triangle's extent
+  // within the row: its bounding box alone would put a long diagonal sliver (CAD cylinders are
+  // strips of them) in a square of cells, which took a quarter of the brake disc's meshing stage
+  // to fill and another to search. A point rounded to a neighbouring row or column is still found:
+  // `locate()` searches the ring of cells around its cell when its own holds no triangle with it.
+  template <typename F>
+  void for_each_cell(std::size_t t, const F& f) const
+  {
+    const std::array<Point_2, 3> corner{{points_[triangles_[t][0]], points_[triangles_[t][1]], points_[triangles_[t][2]]}};
+    const double row_height = (box_.ymax() - box_.ymin() + 1e-300) / ny_;
+    const double ymin = (std::min)({corner[0].y(), corner[1].y(), corner[2].y()});
+    const double ymax = (std::max)({corner[0].y(), corner[1].y(), corner[2].y()});
+    for(int j = cell_y(ymin); j <= cell_y(ymax); ++j)
+    {
+      // The triangle's x extent within the row [bottom, top]: its corners in the row and where
+      // its sides cross the row's two lines.
+      const double bottom = (std::max)(ymin, box_.ymin() + j * row_height), top = (std::min)(ymax, box_.ymin() + (j + 1) * row_height);
+      double xmin = std::numeric_limits<double>::infinity(), xmax = -xmin;
+      auto extend = [&](double x) {
+        xmin = (std::min)(xmin, x);
+        xmax = (std::max)(xmax, x);
+      };
+      for(int c = 0; c < 3; ++c)
+      {
+        const Point_2 &p = corner[c], &q = corner[(c + 1) % 3];
+        if(p.y() >= bottom && p.y() <= top)
+          extend(p.x());
+        for(double y : {bottom, top})
+          if((p.y() - y) * (q.y() - y) < 0.)
+            extend(p.x() + (y - p.y()) / (q.y() - p.y()) * (q.x() - p.x()));
+      }
+      if(!(xmin <= xmax)) // the row only grazes the triangle, by rounding: the bounding box's x extent
+      {
+        xmin = (std::min)({corner[0].x(), corner[1].x(), corner[2].x()});
+        xmax = (std::max)({corner[0].x(), corner[1].x(), corner[2].x()});
+      }
+      for(int i = cell_x(xmin); i <= cell_x(xmax); ++i)
+        f(std::size_t(j) * std::size_t(nx_) + std::size_t(i));
+    }
+  }
+
   int cell_x(double x) const
   {
     return (std::max)(0, (std::min)(nx_ - 1, int((x - box_.xmin()) / (box_.xmax() - box_.xmin() + 1e-300) * nx_)));
@@ -152,7 +195,8 @@ private:
   const std::vector<std::array<int, 3> >& triangles_;
   CGAL::Bbox_2 box_;
   int nx_ = 1, ny_ = 1;
-  std::vector<std::vector<std::size_t> > buckets_;
+  std::vector<std::size_t> bucket_start_;     // cell c's triangles are bucket_triangles_[bucket_start_[c], bucket_start_[c + 1])
+  std::vector<std::size_t> bucket_triangles_;
   std::vector<std::array<int, 3> > neighbor_;
 };
 
