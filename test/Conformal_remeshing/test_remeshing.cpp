@@ -357,6 +357,33 @@ TEST(RemeshConformal, LocationsInSliversAreExact)
   EXPECT_LT(std::sqrt(CGAL::squared_distance(on_side, K::Point_3(0.75, 0., 0.))), 1e-15);
 }
 
+TEST(SurfaceOptimization, SkewnessAgreesWithTheAnglesOfTheTriangle)
+{
+  // The optimizer's skewness takes a polynomial arc cosine (within 2e-8): against the angles
+  // from std::atan2 on random triangles, from needles to obtuse ones, and the degenerate cases.
+  typedef CGAL::Epick::Point_3 P3;
+  auto reference = [](const P3& p, const P3& q, const P3& r) {
+    const double a = RM::Triangle_shape::angle(p, q, r), b = RM::Triangle_shape::angle(q, r, p), c = RM::Triangle_shape::angle(r, p, q);
+    const double largest = (std::max)({a, b, c}), smallest = (std::min)({a, b, c});
+    return (std::max)((largest - CGAL_PI / 3.) / (2. * CGAL_PI / 3.), (CGAL_PI / 3. - smallest) / (CGAL_PI / 3.));
+  };
+  std::mt19937 random(11);
+  std::uniform_real_distribution<double> coordinate(-1., 1.), flatness(1e-6, 1.);
+  double largest_error = 0.;
+  for(int k = 0; k < 100000; ++k)
+  {
+    const double squash = flatness(random);
+    const P3 p(coordinate(random), squash * coordinate(random), 0.), q(coordinate(random), squash * coordinate(random), 0.),
+        r(coordinate(random), squash * coordinate(random), squash * coordinate(random));
+    largest_error = (std::max)(largest_error, std::abs(RM::Triangle_shape::skewness(p, q, r) - reference(p, q, r)));
+  }
+  EXPECT_LT(largest_error, 2e-7);
+  EXPECT_NEAR(RM::Triangle_shape::skewness(P3(0., 0., 0.), P3(1., 0., 0.), P3(0.5, std::sqrt(3.) / 2., 0.)), 0., 1e-7);
+  EXPECT_NEAR(RM::Triangle_shape::skewness(P3(0., 0., 0.), P3(1., 0., 0.), P3(0., 1., 0.)), 0.25, 1e-7); // 90 degrees
+  EXPECT_EQ(RM::Triangle_shape::skewness(P3(0., 0., 0.), P3(1., 0., 0.), P3(1., 0., 0.)), 1.);       // two corners at one point
+  EXPECT_NEAR(RM::Triangle_shape::skewness(P3(0., 0., 0.), P3(1., 0., 0.), P3(2., 0., 0.)), 1., 1e-7); // collinear: 180 degrees
+}
+
 TEST(SurfaceOptimization, LeavesANonManifoldInputAsIs)
 {
   // Three triangles on the edge (0, 1).
