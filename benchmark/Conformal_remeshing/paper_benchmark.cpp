@@ -160,7 +160,7 @@ struct Record
 void write_library_report(tools::Json_writer& json, const CR::Remeshing_report& r)
 {
   double welding = 0., refinement = 0., layout = 0., check = 0., flips = 0., factorization = 0., solve = 0., line_search = 0.;
-  std::size_t iterations = 0, not_converged = 0, edge_splits = 0, boundary_splits = 0, welded_vertices = 0;
+  std::size_t iterations = 0, not_converged = 0, edge_splits = 0, boundary_splits = 0, welded_vertices = 0, hole_fill_flips = 0;
   for(const CR::Flattening_report& p : r.patches)
   {
     welding += p.seconds_welding;
@@ -176,6 +176,7 @@ void write_library_report(tools::Json_writer& json, const CR::Remeshing_report& 
     edge_splits += p.edge_splits;
     boundary_splits += p.boundary_splits;
     welded_vertices += p.welded_vertices;
+    hole_fill_flips += p.hole_fill_flips;
   }
   json.key("library_seconds").begin_object()
       .field("segmentation", r.seconds_segmentation).field("flattening", r.seconds_flattening)
@@ -193,7 +194,7 @@ void write_library_report(tools::Json_writer& json, const CR::Remeshing_report& 
       .field("patch_bisections", r.patch_bisections).field("feature_edges", r.feature_edges)
       .field("dangling_feature_edges", r.dangling_feature_edges).end_object();
   json.key("flattening").begin_object().field("newton_iterations_max", r.max_newton_iterations)
-      .field("newton_iterations_total", iterations).field("flips", r.flips)
+      .field("newton_iterations_total", iterations).field("flips", r.flips).field("hole_fill_flips", hole_fill_flips)
       .field("retriangulated_faces", r.retriangulated_faces).field("patches_not_converged", not_converged).field("max_curvature_error", r.max_curvature_error)
       .field("max_scale_ratio", r.max_scale_ratio).field("edge_splits", edge_splits)
       .field("boundary_splits", boundary_splits).field("welded_vertices", welded_vertices).end_object();

@@ -600,6 +600,8 @@ public:
 
   /// Number of flips performed since construction (the length of the correspondence record).
   std::size_t number_of_flips() const { return flips_.size(); }
+  /// The two faces of the `i`-th flip (a flip keeps the indices of the faces it relinks).
+  std::pair<int, int> faces_of_flip(std::size_t i) const { return {flips_[i].face_a, flips_[i].face_b}; }
   /// Number of edge splits performed since construction.
   std::size_t number_of_splits() const { return splits_.size(); }
   /// Number of changes of the connectivity (flips and splits) since construction.

@@ -70,6 +70,9 @@ struct Flattening_report
   int iterations = 0;
   double curvature_error = 0.;
   std::size_t flips = 0;
+  /// part of `flips`: those in the hole fills (a fill by a loop's polygon without interior
+  /// points flipped with the square of the loop's size)
+  std::size_t hole_fill_flips = 0;
   std::size_t boundary_loops = 0;
   /// boundary edges split at their midpoints before welding (the welded loop's edges are kept
   /// below 1/32 of its length, so that the annulus' inscribed polygon is well defined)
@@ -243,7 +246,7 @@ private:
     if(best_face < 0 || kept <= 0.)
       throw Error(Error_code::NOT_AN_EMBEDDING, "conformal_flatten: a point of the patch maps outside it (internal error)");
     // (A hole filled by a triangulation of its loop has faces with three seam vertices: the
-    // weight of one that the patch face lacks is dropped too.)
+    // weight of one that the patch face lacks is dropped too, as that of a fill's own points.)
     double matched = 0.;
     for(int c = 0; c < 3; ++c)
       for(int d = 0; d < 3; ++d)
@@ -417,7 +420,8 @@ inline bool split_long_patch_edges(Intrinsic_triangulation<double>& tri, std::si
 ///
 /// One boundary loop (the longest by default) is welded to a planar annulus, every other loop
 /// is filled (with a cone vertex, or by the constrained Delaunay triangulation of its polygon
-/// seen along its normal where the cone's fan is not Delaunay), and the discrete Ricci flow makes the welded disc flat with
+/// seen along its normal where the cone's fan is not Delaunay, with grid points inside at 2/3
+/// of `maximum_edge_length`), and the discrete Ricci flow makes the welded disc flat with
 /// the annulus' inner circle as a convex boundary (targets: 0 at every vertex, 2&pi;/n at the n
 /// vertices of the inner circle). The flat disc is laid out; a locally injective map of a disc
 /// with a convex boundary is an embedding, so the patch region is embedded, which is then
@@ -563,7 +567,7 @@ Conformal_flattening conformal_flatten(const TriangleMesh& mesh,
   }
 
   internal::welding::Welded_disc disc = planar ? internal::welding::unwelded_disc(patch)
-                                               : internal::welding::weld(patch, welded, inner_radius);
+                                               : internal::welding::weld(patch, welded, inner_radius, maximum_length / 1.5);
   report.flat_sides_shortened = internal::welding::open_numerically_flat_faces(disc);
   result.welded_faces = disc.faces;
   result.faces_of_vertex_start.assign(patch.points.size() + 1, 0);
@@ -687,6 +691,9 @@ Conformal_flattening conformal_flatten(const TriangleMesh& mesh,
       }
     }
   }
+  // Seams are never flipped, so the faces of a flip stay in one region.
+  for(std::size_t i = 0; i < tri.number_of_flips(); ++i)
+    report.hole_fill_flips += result.face_region[tri.faces_of_flip(i).first] == Welded_region::HOLE_FILL ? 1 : 0;
   const std::vector<Intrinsic_triangulation<double>::Point_2> positions = planar ? internal::welding::planar_coordinates(patch)
                                                                                   : tri.layout();
   time_limit.check("after the layout");

@@ -87,85 +87,44 @@ template <typename CDT>
 std::vector<Vec3> add_interior_points(CDT& cdt, Flat_region& region, double spacing, int first_index,
                                       const std::vector<Vec3>& patch_points)
 {
-  typedef typename CDT::Point Point;
-  CGAL::Bbox_2 box;
-  for(const Point& p : region.points)
-    box += p.bbox();
-  if(!(spacing > 0.) || ((box.xmax() - box.xmin()) / spacing + 1.) * ((box.ymax() - box.ymin()) / spacing + 1.) > 4e6)
-    return {};
-  struct Added
+  const auto grid = grid_points_inside(cdt, spacing);
+  // The original face holding each point, found before any is inserted: by a walk from the grid
+  // point before, a few original faces away in the same row (from the new face's corners, a walk
+  // may cross a CAD fan or a bend's strip of slivers lengthwise).
+  std::vector<std::pair<int, std::array<double, 3> > > original(grid.size(), {-1, {}});
+  std::vector<typename CDT::Point> points;
+  points.reserve(grid.size());
+  for(std::size_t k = 0; k < grid.size(); ++k)
   {
-    Point point;
-    typename CDT::Vertex_handle vertex;
-    std::pair<int, std::array<double, 3> > original; // face and barycentric coordinates
-  };
-  std::vector<Added> added;
-  typename CDT::Face_handle hint;
-  for(double y = box.ymin() + 0.5 * spacing; y < box.ymax(); y += spacing)
-    for(double x = box.xmin() + 0.5 * spacing; x < box.xmax(); x += spacing)
+    if(k > 0)
+      original[k] = region.locate_point_from(original[k - 1].first, grid[k - 1].first, grid[k].first);
+    if(original[k].first < 0)
     {
-      const Point p(x, y);
-      typename CDT::Locate_type type;
-      int i = 0;
-      const typename CDT::Face_handle f = cdt.locate(p, type, i, hint);
-      hint = f;
-      if(type != CDT::FACE || f->info() % 2 != 1)
-        continue;
-      // Walk from the grid point before, a few original faces away in the same row (from the
-      // new face's corners, a walk may cross a CAD fan or a bend's strip of slivers lengthwise).
-      std::pair<int, std::array<double, 3> > original(-1, {});
-      if(!added.empty())
-        original = region.locate_point_from(added.back().original.first, added.back().point, p);
-      if(original.first < 0)
-      {
-        std::array<int, 3> corners;
-        for(int c = 0; c < 3; ++c)
-          corners[c] = f->vertex(c)->info();
-        original = region.locate_point(corners, p);
-      }
-      added.push_back(Added{p, typename CDT::Vertex_handle(), original});
+      std::array<int, 3> corners;
+      for(int c = 0; c < 3; ++c)
+        corners[c] = grid[k].second->vertex(c)->info();
+      original[k] = region.locate_point(corners, grid[k].first);
     }
-  for(std::size_t k = 0; k < added.size(); ++k) // after the walks, which start from the triangulation's vertices
-  {
-    added[k].vertex = k == 0 ? cdt.insert(added[k].point) : cdt.insert(added[k].point, added[k - 1].vertex->face());
-    added[k].vertex->info() = -1;
+    points.push_back(grid[k].first);
   }
-  // Too near the boundary: a constrained side of a face around it is closer than a third of spacing.
-  const double nearest = CGAL::square(spacing / 3.);
-  std::vector<char> kept(added.size(), 1);
-  for(std::size_t k = 0; k < added.size(); ++k)
-  {
-    auto f = cdt.incident_faces(added[k].vertex), done = f;
-    do
-    {
-      const int i = f->index(added[k].vertex);
-      if(cdt.is_constrained(typename CDT::Edge(f, i))
-         && CGAL::squared_distance(added[k].vertex->point(),
-                                   typename CDT::Geom_traits::Segment_2(f->vertex(CDT::cw(i))->point(), f->vertex(CDT::ccw(i))->point())) < nearest)
-        kept[k] = 0;
-    } while(++f != done && kept[k]);
-  }
-  for(std::size_t k = 0; k < added.size(); ++k)
-    if(!kept[k])
-      cdt.remove(added[k].vertex);
+  const auto vertex = insert_away_from_constraints(cdt, points, spacing);
   region.containing_face.assign(region.vertices.size(), -1);
-  std::vector<Vec3> points;
-  for(std::size_t k = 0; k < added.size(); ++k)
-    if(kept[k])
+  std::vector<Vec3> added;
+  for(std::size_t k = 0; k < vertex.size(); ++k)
+    if(vertex[k] != typename CDT::Vertex_handle())
     {
-      added[k].vertex->info() = int(region.vertices.size());
-      region.vertices.push_back(first_index + int(points.size()));
-      region.points.push_back(added[k].vertex->point());
-      region.containing_face.push_back(added[k].original.first);
+      vertex[k]->info() = int(region.vertices.size());
+      region.vertices.push_back(first_index + int(added.size()));
+      region.points.push_back(vertex[k]->point());
+      region.containing_face.push_back(original[k].first);
       region.fan_start.push_back(region.fan_start.back()); // no original face has it as a corner
       Vec3 x{{0., 0., 0.}};
       for(int c = 0; c < 3; ++c)
         for(int d = 0; d < 3; ++d)
-          x[d] += added[k].original.second[c] * patch_points[region.vertices[region.faces[added[k].original.first][c]]][d];
-      points.push_back(x);
+          x[d] += original[k].second[c] * patch_points[region.vertices[region.faces[original[k].first][c]]][d];
+      added.push_back(x);
     }
-  mark_constraint_depth(cdt);
-  return points;
+  return added;
 }
 
 // A plane through a face of a patch and the exact projection of that plane to the coordinate
