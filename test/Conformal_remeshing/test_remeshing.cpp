@@ -384,6 +384,60 @@ TEST(SurfaceOptimization, SkewnessAgreesWithTheAnglesOfTheTriangle)
   EXPECT_NEAR(RM::Triangle_shape::skewness(P3(0., 0., 0.), P3(1., 0., 0.), P3(2., 0., 0.)), 1., 1e-7); // collinear: 180 degrees
 }
 
+TEST(SurfaceOptimization, AnglePassesRaiseTheTrianglesBelowThirtyDegrees)
+{
+  // The optimization of remesh_conformal() before its angle passes, on a wavy sheet whose
+  // refinement bound is 28 degrees: it leaves triangles between 28 and 30 degrees on the surface.
+  const std::vector<std::vector<RM::Boundary_sample> > loops{sampled_square(1., 0.05, false), sampled_square(0.3, 0.05, true)};
+  const RM::Planar_mesh raw = RM::mesh_planar_domain<CGAL::Epick>(loops, 28., [](const CGAL::Epick::Point_2&) { return 0.07; }, 1, false);
+  std::vector<CGAL::Epick::Point_2> points = raw.points;
+  std::vector<std::array<int, 3> > triangles = raw.triangles;
+  std::vector<CGAL::Epick::Point_3> positions;
+  for(const auto& p : points)
+    positions.push_back(wavy_lift(p));
+  const auto lift = &wavy_lift_near; // the optimizer keeps a reference to it
+  typedef RM::Surface_mesh_optimizer<decltype(lift)> Optimizer;
+  Optimizer optimizer(points, positions, triangles, lift, 28., 0.07);
+  ASSERT_TRUE(optimizer.initialize(raw.number_of_samples));
+  for(int round = 0; round < 5; ++round)
+  {
+    optimizer.flip_pass(Optimizer::VALENCE);
+    optimizer.flip_pass(Optimizer::SHAPE);
+    optimizer.smoothing_pass();
+    optimizer.smoothing_pass();
+  }
+  for(int pass = 0; pass < 3; ++pass)
+    optimizer.skewness_pass(0.12);
+  auto below_30 = [&]() {
+    std::size_t below = 0;
+    for(const auto& t : triangles)
+    {
+      const std::array<double, 3> a = CR::triangle_quality(positions[t[0]], positions[t[1]], positions[t[2]]).angles;
+      below += (std::min)({a[0], a[1], a[2]}) < 30.;
+    }
+    return below;
+  };
+  const std::size_t before = below_30();
+  const Optimized_mesh_statistics shapes_before = statistics(points, positions, triangles);
+  ASSERT_GT(before, 5u) << "nothing for the angle passes to do";
+
+  std::size_t changes = 0;
+  for(int pass = 0; pass < 3; ++pass)
+    changes += optimizer.angle_pass(30.);
+  const std::size_t after = below_30();
+  const Optimized_mesh_statistics shapes_after = statistics(points, positions, triangles);
+  EXPECT_GT(changes, 0u);
+  EXPECT_LT(2 * after, before) << "below 30 degrees: " << before << " -> " << after;
+  EXPECT_GE(shapes_after.smallest_angle, shapes_before.smallest_angle - 1e-9);
+  EXPECT_TRUE(shapes_after.manifold);
+  EXPECT_EQ(shapes_after.folded, 0u);
+  EXPECT_NEAR(shapes_after.planar_area, 4. - 0.36, 1e-12);
+  EXPECT_EQ(shapes_after.boundary_edges, shapes_before.boundary_edges);
+  EXPECT_LT(shapes_after.mean_skewness, shapes_before.mean_skewness + 0.005);
+  for(std::size_t v = 0; v < points.size(); ++v)
+    EXPECT_EQ(positions[v], wavy_lift(points[v]));
+}
+
 TEST(SurfaceOptimization, LeavesANonManifoldInputAsIs)
 {
   // Three triangles on the edge (0, 1).
