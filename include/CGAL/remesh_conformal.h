@@ -10,6 +10,7 @@
 #include <CGAL/Conformal_remeshing/Error.h>
 #include <CGAL/Conformal_remeshing/conformal_flatten.h>
 #include <CGAL/Conformal_remeshing/internal/named_parameters.h>
+#include <CGAL/Conformal_remeshing/internal/parallel_for_each_index.h>
 #include <CGAL/Conformal_remeshing/internal/time_limit.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/boundary_curves.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/planar_locator.h>
@@ -40,10 +41,6 @@
 #include <utility>
 #include <vector>
 
-#ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/blocked_range.h>
-#include <tbb/parallel_for.h>
-#endif
 
 // Named parameters of `remesh_conformal()` (see its documentation): `target_edge_length(l)`,
 // `relative_target_edge_length(r)` (default 0.01 of the bounding-box diagonal),
@@ -473,24 +470,6 @@ inline std::string describe_glue_defect(const std::vector<std::array<std::size_t
   return "no defect found (internal error)";
 }
 
-// Runs `task(i)` for i in [0, n), in parallel with TBB when asked for and available.
-template <typename ConcurrencyTag, typename Task>
-void for_each_patch(std::size_t n, const Task& task)
-{
-#ifdef CGAL_LINKED_WITH_TBB
-  if(std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value)
-  {
-    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 1), [&](const tbb::blocked_range<std::size_t>& r) {
-      for(std::size_t i = r.begin(); i != r.end(); ++i)
-        task(i);
-    });
-    return;
-  }
-#endif
-  for(std::size_t i = 0; i < n; ++i)
-    task(i);
-}
-
 } // namespace remeshing
 } // namespace internal
 
@@ -663,7 +642,7 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
     patches.assign(n, Extracted_patch());
     flattenings.assign(n, Conformal_flattening());
     failures.assign(n, std::string());
-    internal::remeshing::for_each_patch<ConcurrencyTag>(n, [&](std::size_t p) {
+    Conformal_remeshing::internal::for_each_index<ConcurrencyTag>(n, [&](std::size_t p) {
       try
       {
         patches[p] = extract_patch(segmentation, patch_faces[p]);
@@ -750,7 +729,7 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
       std::iota(to_mesh.begin(), to_mesh.end(), std::size_t(0));
     }
     failures.assign(patches.size(), std::string());
-    internal::remeshing::for_each_patch<ConcurrencyTag>(to_mesh.size(), [&](std::size_t i) {
+    Conformal_remeshing::internal::for_each_index<ConcurrencyTag>(to_mesh.size(), [&](std::size_t i) {
       const std::size_t p = to_mesh[i];
       try
       {

@@ -178,3 +178,48 @@ TEST(ReferenceComparison, SelfIntersectingCopy)
   const CR::Reference_comparison c = CR::compare_to_reference(folded, reference);
   EXPECT_TRUE(c.self_intersects);
 }
+
+TEST(ReferenceComparison, SamplesComeFromTheSeedAlone)
+{
+  // A flat coarse copy of a bumpy grid: the distance from the copy to the bumps is that of the
+  // farthest sample, so it depends on where the random points fall (CGAL 5.5's sampler drew them
+  // from its default generator whatever the seed).
+  const auto bumpy = [](Mesh m, double period) {
+    for(auto v : m.vertices())
+    {
+      const Point p = m.point(v);
+      m.point(v) = Point(p.x(), p.y(), std::sin(p.x() * period) * std::cos(p.y() * period));
+    }
+    return m;
+  };
+  const Mesh reference = bumpy(grid(24), 1.3);
+  Mesh coarse = grid(6);
+  for(auto v : coarse.vertices())
+    coarse.point(v) = Point(4 * coarse.point(v).x(), 4 * coarse.point(v).y(), 0.);
+  const auto with_seed = [&](unsigned int seed) {
+    return CR::compare_to_reference(coarse, reference, CGAL::parameters::number_of_points_on_faces(500).random_seed(seed));
+  };
+  const CR::Reference_comparison first = with_seed(7), again = with_seed(7), other = with_seed(8);
+  EXPECT_EQ(first.relative_distance_to_reference, again.relative_distance_to_reference);
+  EXPECT_EQ(first.relative_distance_from_reference, again.relative_distance_from_reference);
+  EXPECT_NE(first.relative_distance_to_reference, other.relative_distance_to_reference);
+  EXPECT_GT(first.relative_distance_from_reference, 0.5 / first.reference_diagonal); // near the bumps' height of 1
+}
+
+TEST(ReferenceComparison, SamplesLieOnTheMesh)
+{
+  // Vertices, as many points on the edges, then the points on the faces; all on the flat grid.
+  const Mesh m = grid(5);
+  const auto points = CR::internal::sample_points(m, 1000, 3);
+  ASSERT_EQ(points.size(), 2 * m.number_of_vertices() + 1000);
+  std::size_t inside_the_lower_left_quarter = 0;
+  for(const auto& p : points)
+  {
+    EXPECT_EQ(p.z(), 0.);
+    EXPECT_TRUE(p.x() >= 0. && p.x() <= 5. && p.y() >= 0. && p.y() <= 5.) << p;
+    inside_the_lower_left_quarter += (p.x() < 2.5 && p.y() < 2.5);
+  }
+  // Points spread by area: a quarter of the grid gets about a quarter of them.
+  EXPECT_GT(inside_the_lower_left_quarter, points.size() / 6);
+  EXPECT_LT(inside_the_lower_left_quarter, points.size() / 3);
+}
