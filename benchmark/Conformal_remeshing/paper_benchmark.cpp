@@ -2,6 +2,7 @@
 // that the peak memory measured is the run's own; and the list of the benchmark's runs.
 //
 //   paper_benchmark plan [--scale full|small] [--part table|scaling|all] [--models NAME,...]
+//                        [--methods conformal,isotropic]
 //   paper_benchmark run MESH OUT.json --method conformal|isotropic
 //                   (--target-output-vertices N | --target-edge-length L) [--name NAME]
 //                   [--mid-plane-cut] [--time-limit SECONDS] [--hausdorff-samples N] [--output OUT.off]
@@ -15,8 +16,8 @@
 // vertices. It records the wall seconds and the peak resident memory of every stage (the
 // kernel's high-water mark, reset when a stage starts; remesh_conformal() says when its stages
 // start through its progress callback), the library's own report (per-patch stage times, Newton
-// iterations, flips), the process's peak memory (getrusage), the sizes, the quality of input
-// and output and the Hausdorff distance both ways. OUT.json is rewritten whenever a stage starts
+// iterations, flips), the process's peak memory (the largest of the stages'), the sizes, the
+// quality of input and output and the Hausdorff distance both ways. OUT.json is rewritten whenever a stage starts
 // (status "running"), so that a run that dies says where; past the time limit a watchdog writes
 // it with status "time_limit" and the process exits with code 3.
 // Exit codes: 0 done, 1 the method failed (status "failed" with the error), 2 bad arguments or
@@ -70,6 +71,7 @@ namespace {
 
 const char* usage =
   "usage: paper_benchmark plan [--scale full|small] [--part table|scaling|all] [--models NAME,...]\n"
+  "                            [--methods conformal,isotropic]\n"
   "       paper_benchmark run MESH OUT.json --method conformal|isotropic\n"
   "                       (--target-output-vertices N | --target-edge-length L) [--name NAME]\n"
   "                       [--mid-plane-cut] [--time-limit SECONDS] [--hausdorff-samples N] [--output OUT.off]\n"
@@ -273,9 +275,19 @@ public:
       return;
     end_stage_locked();
     record_.current_stage = name;
+    peak_before_reset_mb_ = std::max(peak_before_reset_mb_, bm::peak_resident_megabytes_since_reset());
     bm::reset_peak_resident_memory();
     stage_start_ = Clock::now();
     write();
+  }
+
+  // The process's peak so far, in MB. Resetting the high-water mark for each stage also resets
+  // what getrusage() reports (its maximum resident size is the same kernel counter while no
+  // thread has exited), so the peaks from before each reset are kept here.
+  double process_peak_megabytes()
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    return std::max({peak_before_reset_mb_, bm::peak_resident_megabytes_since_reset(), bm::peak_resident_megabytes()});
   }
 
   void end_stage()
@@ -327,6 +339,7 @@ private:
   std::string path_;
   std::mutex mutex_;
   Clock::time_point stage_start_ = Clock::now();
+  double peak_before_reset_mb_ = -1.;
 };
 
 // Calls `on_timeout` and ends the process with exit code 3 unless stopped within `seconds`:
@@ -543,10 +556,11 @@ int run(int argc, char** argv)
       recorder.end_stage();
     }
     method_seconds = seconds_since(method_start);
+    const double peak_mb_method = recorder.process_peak_megabytes();
     recorder.update([&](Record& r) {
       r.method_completed = true;
       r.method_seconds = method_seconds;
-      r.peak_mb_method = bm::peak_resident_megabytes();
+      r.peak_mb_method = peak_mb_method;
       r.output_vertices = output.number_of_vertices();
       r.output_faces = output.number_of_faces();
       r.status = "measuring";
@@ -580,6 +594,7 @@ int run(int argc, char** argv)
   const double samples = o.samples > 0. ? o.samples : std::clamp(2. * double(input.number_of_faces()), 2e5, 2e6);
   const CR::Reference_comparison fidelity =
     CR::compare_to_reference(output, input, CGAL::parameters::number_of_points_on_faces(std::size_t(samples)));
+  const double peak_mb_with_measuring = recorder.process_peak_megabytes();
   recorder.update([&](Record& r) {
     r.current_stage.clear();
     r.measured = true;
@@ -589,7 +604,7 @@ int run(int argc, char** argv)
     r.edges_in_range = in_range;
     r.hausdorff_samples = samples;
     r.measuring_seconds = seconds_since(measuring_start);
-    r.peak_mb_with_measuring = bm::peak_resident_megabytes();
+    r.peak_mb_with_measuring = peak_mb_with_measuring;
     r.status = "ok";
   });
   if(!o.output.empty())
@@ -604,7 +619,7 @@ int run(int argc, char** argv)
 int plan(int argc, char** argv)
 {
   bm::Benchmark_scale scale = bm::Benchmark_scale::full;
-  std::string part = "all", models;
+  std::string part = "all", models, methods;
   for(int i = 2; i < argc; ++i)
   {
     const std::string arg = argv[i];
@@ -620,6 +635,8 @@ int plan(int argc, char** argv)
       part = value;
     else if(arg == "--models")
       models = "," + value + ",";
+    else if(arg == "--methods")
+      methods = "," + value + ",";
     else
     {
       std::cerr << "paper_benchmark: bad argument '" << arg << " " << value << "'\n" << usage;
@@ -629,7 +646,10 @@ int plan(int argc, char** argv)
   for(const bm::Planned_run& r : bm::paper_benchmark_plan(scale))
   {
     const std::string model = bm::paper_model_info(r.model).name;
-    if((part != "all" && part != r.part) || (!models.empty() && models.find("," + model + ",") == std::string::npos))
+    const auto listed = [](const std::string& list, const std::string& name) {
+      return list.empty() || list.find("," + name + ",") != std::string::npos;
+    };
+    if((part != "all" && part != r.part) || !listed(models, model) || !listed(methods, r.method))
       continue;
     std::cout << r.id << " " << model << " " << r.input_vertices << " " << r.method << " " << r.output_vertices
               << (r.mid_plane_cut ? " cut" : "") << "\n";

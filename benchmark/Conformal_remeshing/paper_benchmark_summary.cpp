@@ -85,6 +85,23 @@ struct Run
     return nan;
   }
 
+  // The process's peak resident MB up to the end of the method: the largest of the recorded peak
+  // and the stages' (records written before paper_benchmark kept the stages' peaks across its
+  // resets of the high-water mark hold a smaller "peak_mb", the last stages' peak).
+  double process_peak_megabytes() const
+  {
+    if(!present)
+      return nan;
+    double peak = number("peak_mb");
+    for(const auto& s : json.get_child("stages", no_child()))
+    {
+      const double stage_peak = s.second.get<double>("peak_mb", nan);
+      if(!std::isnan(stage_peak) && !(stage_peak <= peak))
+        peak = stage_peak;
+    }
+    return peak;
+  }
+
   // What became of a run that did not finish (empty for one that did).
   std::string failure() const
   {
@@ -272,8 +289,8 @@ struct Summary
          << fmt_count(peer.number("output.faces")) << " | " << fmt(row.parameterization_seconds) << " / " << fmt(param)
          << " | " << (full ? fmt(row.parameterization_seconds / param, 1) + "x" : "–") << " | "
          << fmt(row.remeshing_seconds) << " / " << fmt(remesh) << " | "
-         << (full ? fmt(row.remeshing_seconds / remesh, 1) + "x" : "–") << " | " << fmt(ours.number("peak_mb"), 0)
-         << " / " << fmt(peer.number("peak_mb"), 0) << " | " << status << " |\n";
+         << (full ? fmt(row.remeshing_seconds / remesh, 1) + "x" : "–") << " | " << fmt(ours.process_peak_megabytes(), 0)
+         << " / " << fmt(peer.process_peak_megabytes(), 0) << " | " << status << " |\n";
       json.begin_object().field("part", row.part).field("figure", row.figure).field("model", name);
       json.key("paper").begin_object().field("input_vertices", row.input_vertices).field("input_faces", row.input_faces)
           .field("output_vertices", row.output_vertices).field("output_faces", row.output_faces)
@@ -284,14 +301,14 @@ struct Summary
           .field("output_vertices", ours.number("output.vertices")).field("output_faces", ours.number("output.faces"))
           .field("target_edge_length", ours.number("target_edge_length"))
           .field("parameterization_seconds", param).field("remeshing_seconds", remesh)
-          .field("total_seconds", ours.number("method_seconds")).field("peak_mb", ours.number("peak_mb"));
+          .field("total_seconds", ours.number("method_seconds")).field("peak_mb", ours.process_peak_megabytes());
       if(full)
         json.field("parameterization_speed_up", row.parameterization_seconds / param)
             .field("remeshing_speed_up", row.remeshing_seconds / remesh);
       json.end_object();
       json.key("peer").begin_object().field("status", peer.failure().empty() ? std::string("ok") : peer.failure())
           .field("output_vertices", peer.number("output.vertices")).field("output_faces", peer.number("output.faces"))
-          .field("total_seconds", peer.number("method_seconds")).field("peak_mb", peer.number("peak_mb")).end_object();
+          .field("total_seconds", peer.number("method_seconds")).field("peak_mb", peer.process_peak_megabytes()).end_object();
       json.end_object();
     }
     json.end_array();
@@ -482,7 +499,7 @@ struct Summary
         md << (s == stage_names.front() ? "" : " / ") << fmt(m, 0);
         json.field(s, m);
       }
-      const double peak = ok ? r.number("peak_mb") : nan;
+      const double peak = ok ? r.process_peak_megabytes() : nan;
       peaks["total"].push_back(peak);
       json.end_object().field("peak_mb", peak).end_object();
       md << " | " << fmt(peak, 0) << " | " << (r.failure().empty() ? std::string("ok") : r.failure()) << " |\n";
@@ -554,8 +571,8 @@ struct Summary
     const bm::Paper_table_1_row& largest = bm::paper_table_1().back();
     const Run& big = run("table_" + std::string(bm::paper_model_info(largest.model).name) + "_conformal");
     target("peak memory under 8 GB at " + fmt_count(double(largest.input_vertices)), full,
-           big.completed() && big.number("peak_mb") < bm::peak_memory_target_megabytes,
-           !full ? why_not : big.completed() ? fmt(big.number("peak_mb"), 0) + " MB" : big.failure());
+           big.completed() && big.process_peak_megabytes() < bm::peak_memory_target_megabytes,
+           !full ? why_not : big.completed() ? fmt(big.process_peak_megabytes(), 0) + " MB" : big.failure());
     target("growth close to n log n in every stage", growth_.checked, growth_.met, growth_.detail);
     for(const bm::Paper_table_1_row& row : bm::paper_table_1())
     {

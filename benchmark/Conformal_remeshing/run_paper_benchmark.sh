@@ -4,13 +4,15 @@
 # same run, and the growth of every stage with the input size.
 #
 #   bash benchmark/Conformal_remeshing/run_paper_benchmark.sh [--scale full|small]
-#        [--part table|scaling|all] [--models NAME,...] [--time-limit SECONDS] [--resume] [OUT_DIR]
+#        [--part table|scaling|all] [--models NAME,...] [--methods conformal,isotropic]
+#        [--time-limit SECONDS] [--resume] [OUT_DIR]
 #
 #   --scale       full: Table 1's sizes (87k to 804k input vertices) and 10k to 1M for the growth
 #                 (hours on 2 cores); small: a tenth of Table 1's sizes and 10k to 100k (minutes)
 #                 [full]
 #   --part        Table 1 runs, growth runs or both [all]
 #   --models      only these parts (generator names, e.g. suspension_arm,brake_disc)
+#   --methods     only these remeshers (conformal: ours, isotropic: the peer) [both]
 #   --time-limit  seconds per run before it is stopped and recorded as such [3600 full, 900 small]
 #   --resume      keep the runs already recorded as finished in OUT_DIR
 #   OUT_DIR       where the results go [out/paper_benchmark_<scale>]
@@ -27,12 +29,13 @@ root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 fail() { echo "run_paper_benchmark.sh: $*" >&2; exit 2; }
 trap 'echo "run_paper_benchmark.sh: failed at line $LINENO: $BASH_COMMAND" >&2' ERR
 
-scale=full part=all models="" time_limit="" resume=0 out=""
+scale=full part=all models="" methods="" time_limit="" resume=0 out=""
 while [ $# -gt 0 ]; do
   case "$1" in
     --scale) [ $# -ge 2 ] || fail "--scale needs a value"; scale="$2"; shift 2 ;;
     --part) [ $# -ge 2 ] || fail "--part needs a value"; part="$2"; shift 2 ;;
     --models) [ $# -ge 2 ] || fail "--models needs a value"; models="$2"; shift 2 ;;
+    --methods) [ $# -ge 2 ] || fail "--methods needs a value"; methods="$2"; shift 2 ;;
     --time-limit) [ $# -ge 2 ] || fail "--time-limit needs a value"; time_limit="$2"; shift 2 ;;
     --resume) resume=1; shift ;;
     -h|--help) sed -n '2,26p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; exit 0 ;;
@@ -62,8 +65,9 @@ mkdir -p "$out/runs" "$cache"
 generator_key=$(cat "$root"/benchmark/Conformal_remeshing/generators/*.h | sha1sum | cut -c1-10)
 plan_args=(--scale "$scale" --part "$part")
 [ -z "$models" ] || plan_args+=(--models "$models")
+[ -z "$methods" ] || plan_args+=(--methods "$methods")
 plan="$("$bin/paper_benchmark" plan "${plan_args[@]}")"
-[ -n "$plan" ] || fail "no run matches --part $part --models '$models'"
+[ -n "$plan" ] || fail "no run matches --part $part --models '$models' --methods '$methods'"
 total=$(printf '%s\n' "$plan" | wc -l)
 echo "Paper benchmark, $scale scale: $total runs, at most $time_limit s each; results in $out"
 index=0 unfinished=()
