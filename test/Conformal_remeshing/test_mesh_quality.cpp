@@ -3,12 +3,19 @@
 
 #include <CGAL/Conformal_remeshing/mesh_quality.h>
 
+#include <cad_like_models.h>
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Random.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace CR = CGAL::Conformal_remeshing;
@@ -222,4 +229,57 @@ TEST(ReferenceComparison, SamplesLieOnTheMesh)
   // Points spread by area: a quarter of the grid gets about a quarter of them.
   EXPECT_GT(inside_the_lower_left_quarter, points.size() / 6);
   EXPECT_LT(inside_the_lower_left_quarter, points.size() / 3);
+}
+
+TEST(ReferenceComparison, CoverOfACadPlateIsItsSurfaceWithoutTheFans)
+{
+  // The default plate's top and bottom faces are fans of slivers between the rim and the holes;
+  // the cover the closest-point searches use retriangulates them.
+  Mesh plate;
+  CGAL::Conformal_remeshing::benchmarks::make_perforated_plate(plate, CGAL::Conformal_remeshing::benchmarks::Perforated_plate_parameters());
+  typedef CGAL::Simple_cartesian<double> Fast;
+  const std::vector<Fast::Triangle_3> cover = CR::internal::well_shaped_cover(plate);
+
+  // Slivers (smallest angle below 5 degrees) on the top and bottom faces (normal along z).
+  const auto is_flat_sliver = [](const Fast::Point_3& p, const Fast::Point_3& q, const Fast::Point_3& r) {
+    const std::array<double, 3> a = CR::triangle_quality(p, q, r).angles;
+    const Fast::Vector_3 n = CGAL::cross_product(q - p, r - p);
+    return n.x() == 0. && n.y() == 0. && (std::min)({a[0], a[1], a[2]}) < 5.;
+  };
+  double area = 0.;
+  std::size_t cover_slivers = 0, plate_slivers = 0;
+  for(const Fast::Triangle_3& t : cover)
+  {
+    area += std::sqrt(t.squared_area());
+    cover_slivers += is_flat_sliver(t[0], t[1], t[2]);
+  }
+  std::vector<Fast::Triangle_3> faces;
+  for(auto f : plate.faces())
+  {
+    std::vector<Fast::Point_3> c;
+    for(auto v : CGAL::vertices_around_face(plate.halfedge(f), plate))
+      c.emplace_back(plate.point(v).x(), plate.point(v).y(), plate.point(v).z());
+    faces.emplace_back(c[0], c[1], c[2]);
+    plate_slivers += is_flat_sliver(c[0], c[1], c[2]);
+  }
+  const double plate_area = CGAL::Polygon_mesh_processing::area(plate);
+  EXPECT_NEAR(area, plate_area, 1e-9 * plate_area);
+  EXPECT_GT(plate_slivers, 1000u);
+  EXPECT_LT(cover_slivers, 20u) << cover.size() << " triangles";
+
+  // The same closest distances as the plate's own faces, from points on it and around it.
+  const CR::Reference_comparison c = CR::compare_to_reference(plate, plate);
+  EXPECT_LT(c.relative_hausdorff_distance(), 1e-12);
+  std::vector<Fast::Point_3> queries = CR::internal::sample_points(plate, 200, 5);
+  CGAL::Random random(11);
+  for(int i = 0; i < 300; ++i)
+    queries.emplace_back(random.get_double(-70., 70.), random.get_double(-50., 50.), random.get_double(-8., 8.));
+  const auto distance_to = [](const std::vector<Fast::Triangle_3>& triangles, const Fast::Point_3& q) {
+    double d = std::numeric_limits<double>::infinity();
+    for(const Fast::Triangle_3& t : triangles)
+      d = (std::min)(d, CGAL::squared_distance(q, t));
+    return std::sqrt(d);
+  };
+  for(const Fast::Point_3& q : queries)
+    EXPECT_NEAR(distance_to(cover, q), distance_to(faces, q), 1e-9 * c.reference_diagonal) << q;
 }

@@ -10,6 +10,7 @@
 
 #include <CGAL/Conformal_remeshing/Error.h>
 #include <CGAL/Conformal_remeshing/internal/parallel_for_each_index.h>
+#include <CGAL/Conformal_remeshing/internal/well_shaped_cover.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -19,7 +20,7 @@
 #include <CGAL/Polygon_mesh_processing/distance.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
-#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
 #include <CGAL/Random.h>
@@ -332,8 +333,7 @@ struct Reference_comparison
 
 namespace internal {
 
-/// Reads a mesh's points as points of `Simple_cartesian<double>` (default-constructible, as the
-/// AABB tree's primitives need, unlike `Cartesian_converter_property_map`).
+/// Reads a mesh's points as points of `Simple_cartesian<double>`.
 template <typename Vertex_point_map>
 struct Double_point_map
 {
@@ -411,19 +411,20 @@ std::vector<CGAL::Simple_cartesian<double>::Point_3> sample_points(const Triangl
 /// sample's closest point and the nearest vertex the tree's search structure finds (CGAL 5.5's
 /// parallel loop starts every TBB range from one vertex of the mesh). From a remeshing of the
 /// 316k-vertex suspension arm to it, on one thread: 295 s by `approximate_Hausdorff_distance()`,
-/// 181 s here. What is left is in the AABB tree itself: the bounding boxes of a CAD fan's long
-/// slivers cover their whole face, and every query there opens all of them.
+/// 181 s here. The tree holds `well_shaped_cover(reference)`, not the faces: the bounding boxes
+/// of a CAD fan's long slivers cover their whole face, and every query there opened all of them.
 template <typename Concurrency_tag, typename TriangleMesh>
 double largest_distance_of_samples(const TriangleMesh& mesh, const TriangleMesh& reference,
                                    std::size_t samples, unsigned int seed)
 {
   using Fast = CGAL::Simple_cartesian<double>;
-  using Point_map = Double_point_map<typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type>;
-  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Fast, CGAL::AABB_face_graph_triangle_primitive<TriangleMesh, Point_map> > >;
+  using Triangles = std::vector<Fast::Triangle_3>;
+  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Fast, CGAL::AABB_triangle_primitive<Fast, Triangles::const_iterator> > >;
 
   std::vector<Fast::Point_3> points = sample_points(mesh, samples, seed);
   CGAL::spatial_sort(points.begin(), points.end());
-  Tree tree(faces(reference).first, faces(reference).second, reference, Point_map{get(CGAL::vertex_point, reference)});
+  const Triangles cover = well_shaped_cover(reference);
+  Tree tree(cover.begin(), cover.end());
   tree.accelerate_distance_queries();
 
   constexpr std::size_t block_size = 4096;

@@ -8,6 +8,7 @@
 #define CGAL_CONFORMAL_REMESHING_INTERNAL_WELDING_CONSTRAINED_DOMAIN_H
 
 #include <CGAL/Bbox_2.h>
+#include <CGAL/squared_distance_2.h>
 
 #include <cstddef>
 #include <utility>

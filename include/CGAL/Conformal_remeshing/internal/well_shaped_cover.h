@@ -1,0 +1,225 @@
+// Copyright (c) 2026 CGAL Conformal Remeshing contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Triangles covering a mesh's surface for closest-point searches: a CAD exporter's planar face
+// is a fan of slivers whose bounding boxes all cover the face, so an AABB tree over them opens
+// every sliver of the fan for every query there, and measuring a CAD part grew with the square
+// of its fans (the 1M suspension arm of issue #7: 1835 s of measuring for a 107 s remeshing).
+// Each region of exactly coplanar faces is replaced by the constrained Delaunay triangulation of
+// its outline, refined to well-shaped triangles, which covers the same part of the plane with
+// few overlapping boxes.
+
+#ifndef CGAL_CONFORMAL_REMESHING_INTERNAL_WELL_SHAPED_COVER_H
+#define CGAL_CONFORMAL_REMESHING_INTERNAL_WELL_SHAPED_COVER_H
+
+#include <CGAL/Conformal_remeshing/internal/welding/constrained_domain.h>
+
+#include <CGAL/Constrained_Delaunay_triangulation_2.h>
+#include <CGAL/Delaunay_mesh_criteria_2.h>
+#include <CGAL/Delaunay_mesh_face_base_2.h>
+#include <CGAL/Delaunay_mesh_vertex_base_2.h>
+#include <CGAL/Delaunay_mesher_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Conformal_remeshing {
+namespace internal {
+
+namespace cover {
+
+typedef CGAL::Epick::Point_3 Point_3;
+typedef CGAL::Simple_cartesian<double>::Triangle_3 Triangle_3;
+
+inline Triangle_3 triangle(const Point_3& p, const Point_3& q, const Point_3& r)
+{
+  typedef CGAL::Simple_cartesian<double>::Point_3 P;
+  return Triangle_3(P(p.x(), p.y(), p.z()), P(q.x(), q.y(), q.z()), P(r.x(), r.y(), r.z()));
+}
+
+// One coplanar region: its faces as corner indices into `points`, and the sides on its outline.
+struct Coplanar_region
+{
+  std::vector<std::array<int, 3> > faces;
+  std::vector<std::array<int, 2> > outline;
+};
+
+// Appends to `out` a constrained Delaunay triangulation of `region`'s outline refined by CGAL's
+// Delaunay mesher to smallest angles of about 20 degrees (no size bound: few points where the
+// outline is coarse), lifted back onto the region's plane; false (nothing appended) when that
+// triangulation does not cover the region's area (overlapping faces, crossing sides).
+inline bool append_retriangulation(const Coplanar_region& region, const std::vector<Point_3>& points,
+                                   std::vector<Triangle_3>& out)
+{
+  typedef CGAL::Epick K;
+  struct Index
+  {
+    int value = -1; // the mesh vertex, -1 for a point the mesher added
+  };
+  typedef CGAL::Triangulation_vertex_base_with_info_2<Index, K, CGAL::Delaunay_mesh_vertex_base_2<K> > Vb;
+  typedef CGAL::Delaunay_mesh_face_base_2<
+    K, CGAL::Triangulation_face_base_with_info_2<int, K, CGAL::Constrained_triangulation_face_base_2<K> > > Fb;
+  typedef CGAL::Triangulation_data_structure_2<Vb, Fb> Tds;
+  typedef CGAL::Constrained_Delaunay_triangulation_2<K, Tds, CGAL::Exact_predicates_tag> CDT;
+
+  // The plane, and the coordinate plane it projects onto one to one (the normal's largest axis).
+  const std::array<int, 3>& seed = region.faces.front();
+  const K::Vector_3 normal = CGAL::cross_product(points[seed[1]] - points[seed[0]], points[seed[2]] - points[seed[0]]);
+  const double n[3] = {normal.x(), normal.y(), normal.z()};
+  int axis = 0;
+  for(int i = 1; i < 3; ++i)
+    if(std::abs(n[i]) > std::abs(n[axis]))
+      axis = i;
+  const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+  const auto project = [&](const Point_3& p) { return K::Point_2(p[u], p[v]); };
+  const Point_3& origin = points[seed[0]];
+  const auto lift = [&](const K::Point_2& q) {
+    double c[3];
+    c[u] = q.x();
+    c[v] = q.y();
+    c[axis] = origin[axis] - (n[u] * (q.x() - origin[u]) + n[v] * (q.y() - origin[v])) / n[axis];
+    return Point_3(c[0], c[1], c[2]);
+  };
+
+  double area = 0.;
+  for(const auto& f : region.faces)
+    area += std::abs(CGAL::area(project(points[f[0]]), project(points[f[1]]), project(points[f[2]])));
+  CDT cdt;
+  for(const auto& s : region.outline)
+  {
+    const auto a = cdt.insert(project(points[s[0]])), b = cdt.insert(project(points[s[1]]), a->face());
+    a->info().value = s[0];
+    b->info().value = s[1];
+    cdt.insert_constraint(a, b);
+  }
+  // The region is the faces an odd number of sides away from the outside.
+  welding::mark_constraint_depth(cdt);
+  for(auto f : cdt.all_face_handles())
+    f->set_in_domain(f->info() % 2 == 1);
+  CGAL::Delaunay_mesher_2<CDT, CGAL::Delaunay_mesh_criteria_2<CDT> > mesher(cdt, CGAL::Delaunay_mesh_criteria_2<CDT>(0.125));
+  mesher.init(true);
+  mesher.refine_mesh();
+
+  std::vector<Triangle_3> triangles;
+  double covered = 0.;
+  for(auto f : cdt.finite_face_handles())
+    if(f->is_in_domain())
+    {
+      std::array<Point_3, 3> corner;
+      for(int i = 0; i < 3; ++i)
+      {
+        const auto vertex = f->vertex(i);
+        corner[i] = vertex->info().value >= 0 ? points[vertex->info().value] : lift(vertex->point());
+      }
+      covered += std::abs(CGAL::area(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()));
+      triangles.push_back(triangle(corner[0], corner[1], corner[2]));
+    }
+  if(!(std::abs(covered - area) <= 1e-9 * area))
+    return false;
+  out.insert(out.end(), triangles.begin(), triangles.end());
+  return true;
+}
+
+} // namespace cover
+
+/// Triangles whose union is the surface of `mesh` (up to the rounding of the points added in
+/// its planar regions), for closest-point searches: the faces of each edge-connected region of
+/// at least `smallest_region` exactly coplanar faces (by `Epick`'s predicates on the points
+/// rounded to double) replaced by its outline's constrained Delaunay triangulation, refined to
+/// well-shaped triangles; every other face as it is.
+template <typename TriangleMesh>
+std::vector<CGAL::Simple_cartesian<double>::Triangle_3> well_shaped_cover(const TriangleMesh& mesh,
+                                                                          std::size_t smallest_region = 16)
+{
+  using cover::Point_3;
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
+  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
+
+  auto vim = CGAL::get_initialized_vertex_index_map(mesh);
+  auto fim = CGAL::get_initialized_face_index_map(mesh);
+  const auto vpm = get(CGAL::vertex_point, mesh);
+  std::vector<Point_3> points(num_vertices(mesh));
+  for(auto v : vertices(mesh))
+  {
+    const auto& p = get(vpm, v);
+    points[get(vim, v)] = Point_3(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+  }
+  std::vector<face_descriptor> face_of(num_faces(mesh));
+  for(face_descriptor f : faces(mesh))
+    face_of[get(fim, f)] = f;
+  const auto corners = [&](face_descriptor f) {
+    const halfedge_descriptor h = halfedge(f, mesh);
+    return std::array<int, 3>{int(get(vim, source(h, mesh))), int(get(vim, target(h, mesh))),
+                              int(get(vim, target(next(h, mesh), mesh)))};
+  };
+
+  const auto is_degenerate = [&](const std::array<int, 3>& c) { return CGAL::collinear(points[c[0]], points[c[1]], points[c[2]]); };
+
+  std::vector<CGAL::Simple_cartesian<double>::Triangle_3> out;
+  out.reserve(face_of.size());
+  std::vector<int> region_of(face_of.size(), -1);
+  std::vector<std::size_t> stack;
+  // Regions grow from proper triangles first, which define a plane; what is left (degenerate
+  // faces no region took) is copied as it is.
+  int regions = 0;
+  for(std::size_t start = 0; start < face_of.size(); ++start)
+  {
+    const std::array<int, 3> s = corners(face_of[start]);
+    if(region_of[start] >= 0 || is_degenerate(s))
+      continue;
+    // The faces coplanar with `start` reached across edges.
+    const int r = regions++;
+    cover::Coplanar_region region;
+    region_of[start] = r;
+    stack.assign(1, start);
+    while(!stack.empty())
+    {
+      const face_descriptor f = face_of[stack.back()];
+      stack.pop_back();
+      region.faces.push_back(corners(f));
+      for(halfedge_descriptor h : halfedges_around_face(halfedge(f, mesh), mesh))
+      {
+        const face_descriptor g = face(opposite(h, mesh), mesh);
+        bool inside = false;
+        if(g != boost::graph_traits<TriangleMesh>::null_face())
+        {
+          const std::size_t k = get(fim, g);
+          if(region_of[k] < 0 && CGAL::coplanar(points[s[0]], points[s[1]], points[s[2]],
+                                                 points[get(vim, target(next(opposite(h, mesh), mesh), mesh))]))
+          {
+            region_of[k] = r;
+            stack.push_back(k);
+          }
+          inside = region_of[k] == r;
+        }
+        if(!inside)
+          region.outline.push_back({int(get(vim, source(h, mesh))), int(get(vim, target(h, mesh)))});
+      }
+    }
+    if(region.faces.size() < smallest_region || !cover::append_retriangulation(region, points, out))
+      for(const auto& f : region.faces)
+        out.push_back(cover::triangle(points[f[0]], points[f[1]], points[f[2]]));
+  }
+  for(std::size_t k = 0; k < face_of.size(); ++k)
+    if(region_of[k] < 0)
+    {
+      const std::array<int, 3> c = corners(face_of[k]);
+      out.push_back(cover::triangle(points[c[0]], points[c[1]], points[c[2]]));
+    }
+  return out;
+}
+
+} // namespace internal
+} // namespace Conformal_remeshing
+} // namespace CGAL
+
+#endif // CGAL_CONFORMAL_REMESHING_INTERNAL_WELL_SHAPED_COVER_H
