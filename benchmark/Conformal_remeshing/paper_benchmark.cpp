@@ -643,12 +643,12 @@ int plan(int argc, char** argv)
       return 2;
     }
   }
+  const auto listed = [](const std::string& list, const std::string& name) {
+    return list.empty() || list.find("," + name + ",") != std::string::npos;
+  };
   for(const bm::Planned_run& r : bm::paper_benchmark_plan(scale))
   {
     const std::string model = bm::paper_model_info(r.model).name;
-    const auto listed = [](const std::string& list, const std::string& name) {
-      return list.empty() || list.find("," + name + ",") != std::string::npos;
-    };
     if((part != "all" && part != r.part) || !listed(models, model) || !listed(methods, r.method))
       continue;
     std::cout << r.id << " " << model << " " << r.input_vertices << " " << r.method << " " << r.output_vertices

@@ -41,7 +41,6 @@
 #include <utility>
 #include <vector>
 
-
 // Named parameters of `remesh_conformal()` (see its documentation): `target_edge_length(l)`,
 // `relative_target_edge_length(r)` (default 0.01 of the bounding-box diagonal),
 // `minimum_angle(degrees)` (default 28), `corner_angle(degrees)` (default 30),

@@ -17,7 +17,6 @@
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
-#include <CGAL/Polygon_mesh_processing/distance.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/AABB_triangle_primitive.h>
@@ -333,23 +332,6 @@ struct Reference_comparison
 
 namespace internal {
 
-/// Reads a mesh's points as points of `Simple_cartesian<double>`.
-template <typename Vertex_point_map>
-struct Double_point_map
-{
-  using key_type = typename boost::property_traits<Vertex_point_map>::key_type;
-  using value_type = CGAL::Simple_cartesian<double>::Point_3;
-  using reference = value_type;
-  using category = boost::readable_property_map_tag;
-  Vertex_point_map points;
-
-  friend value_type get(const Double_point_map& map, const key_type& key)
-  {
-    const auto& p = get(map.points, key);
-    return value_type(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-  }
-};
-
 /// Points on `mesh` as `sample_triangle_mesh()` takes them by default: its vertices, as many
 /// random points on its edges (by length) and `samples` random points on its faces (by area);
 /// all drawn from `seed` (CGAL 5.5's sampler draws the points inside each edge and face from the
@@ -358,10 +340,14 @@ template <typename TriangleMesh>
 std::vector<CGAL::Simple_cartesian<double>::Point_3> sample_points(const TriangleMesh& mesh, std::size_t samples, unsigned int seed)
 {
   using Point = CGAL::Simple_cartesian<double>::Point_3;
-  const Double_point_map<typename boost::property_map<TriangleMesh, CGAL::vertex_point_t>::const_type> at{get(CGAL::vertex_point, mesh)};
+  const auto vpm = get(CGAL::vertex_point, mesh);
+  const auto at = [&](auto v) {
+    const auto& p = get(vpm, v);
+    return Point(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+  };
   std::vector<Point> points;
   for(auto v : vertices(mesh))
-    points.push_back(get(at, v));
+    points.push_back(at(v));
 
   CGAL::Random random(seed);
   // `count` points on the simplices `corners` lists, each chosen with probability proportional to `measure`.
@@ -389,13 +375,13 @@ std::vector<CGAL::Simple_cartesian<double>::Point_3> sample_points(const Triangl
   };
   std::vector<std::array<Point, 2> > segments;
   for(auto e : edges(mesh))
-    segments.push_back({get(at, source(e, mesh)), get(at, target(e, mesh))});
+    segments.push_back({at(source(e, mesh)), at(target(e, mesh))});
   sample(segments, [](const std::array<Point, 2>& s) { return std::sqrt(CGAL::squared_distance(s[0], s[1])); }, num_vertices(mesh));
   std::vector<std::array<Point, 3> > triangles;
   for(auto f : faces(mesh))
   {
     const auto h = halfedge(f, mesh);
-    triangles.push_back({get(at, source(h, mesh)), get(at, target(h, mesh)), get(at, target(next(h, mesh), mesh))});
+    triangles.push_back({at(source(h, mesh)), at(target(h, mesh)), at(target(next(h, mesh), mesh))});
   }
   sample(triangles, [](const std::array<Point, 3>& t) { return std::sqrt(CGAL::squared_area(t[0], t[1], t[2])); }, samples);
   return points;

@@ -162,8 +162,6 @@ std::vector<CGAL::Simple_cartesian<double>::Triangle_3> well_shaped_cover(const 
                               int(get(vim, target(next(h, mesh), mesh)))};
   };
 
-  const auto is_degenerate = [&](const std::array<int, 3>& c) { return CGAL::collinear(points[c[0]], points[c[1]], points[c[2]]); };
-
   std::vector<CGAL::Simple_cartesian<double>::Triangle_3> out;
   out.reserve(face_of.size());
   std::vector<int> region_of(face_of.size(), -1);
@@ -173,8 +171,10 @@ std::vector<CGAL::Simple_cartesian<double>::Triangle_3> well_shaped_cover(const 
   int regions = 0;
   for(std::size_t start = 0; start < face_of.size(); ++start)
   {
+    if(region_of[start] >= 0)
+      continue;
     const std::array<int, 3> s = corners(face_of[start]);
-    if(region_of[start] >= 0 || is_degenerate(s))
+    if(CGAL::collinear(points[s[0]], points[s[1]], points[s[2]]))
       continue;
     // The faces coplanar with `start` reached across edges.
     const int r = regions++;
