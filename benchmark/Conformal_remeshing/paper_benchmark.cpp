@@ -54,6 +54,7 @@
 #include <memory>
 #include <mutex>
 #include <new>
+#include <regex>
 #include <sstream>
 #include <string>
 #include <thread>
@@ -635,7 +636,7 @@ int plan(int argc, char** argv)
       part = value;
     else if(arg == "--models")
       models = "," + value + ",";
-    else if(arg == "--methods")
+    else if(arg == "--methods" && std::regex_match(value, std::regex("(conformal|isotropic)(,(conformal|isotropic))*")))
       methods = "," + value + ",";
     else
     {
