@@ -52,10 +52,10 @@ const char* usage =
   "  --features-angle DEG    edges with a dihedral angle above DEG are sharp features (default 60; 0: none)\n"
   "  --patches FILE          user patches: one integer patch id per input face, in face order\n"
   "  --cut-plane a,b,c,d     cut the surface by the plane ax+by+cz+d=0 first (repeatable)\n"
-  "  --save-patches DIR      DIR/patch_N.off and DIR/patch_N_flattening.svg for every patch\n"
+  "  --save-patches DIR      DIR/patch_N.off and DIR/patch_N_flattening.svg for every patch (DIR is created)\n"
   "  --sequential            one patch at a time (default: in parallel when built with TBB)\n"
   "  --report FILE.json      stage times, segmentation and flattening, quality of input and output, fidelity\n"
-  "  --plots DIR             DIR/quality.svg: angle and skewness histograms, input and output\n"
+  "  --plots DIR             DIR/quality.svg: angle and skewness histograms, input and output (DIR is created)\n"
   "  --quiet                 no progress messages\n"
   "  --time-limit SECONDS    give up (exit code 3, no output written) if reading and remeshing take longer\n"
   "  --optimization-rounds N rounds of flips and smoothing judged on the surface after the refinement (default 5, 0: none)\n"
@@ -187,6 +187,19 @@ int main(int argc, char** argv)
     return 3;
   };
 
+  // Output directories exist before the long work, or the run stops here.
+  try
+  {
+    for(const std::string& directory : {o.save_patches, o.plots})
+      if(!directory.empty())
+        tools::prepare_output_directory(directory);
+  }
+  catch(const std::exception& e)
+  {
+    std::cerr << "remesh_conformal: " << e.what() << "\n";
+    return 2;
+  }
+
   Mesh input;
   try
   {
@@ -314,7 +327,7 @@ int main(int argc, char** argv)
           .field("max_curvature_error", report.max_curvature_error).field("flips", report.flips)
           .field("retriangulated_faces", report.retriangulated_faces).field("max_scale_ratio", report.max_scale_ratio).end_object();
       json.field("boundary_samples", report.boundary_samples).field("clamped_vertices", report.clamped_vertices)
-          .field("optimization_flips", report.optimization_flips);
+          .field("optimization_flips", report.optimization_flips).field("flips_after_gluing", report.flips_after_gluing);
       json.key("input_quality");
       tools::write_json(json, before);
       json.key("output_quality");

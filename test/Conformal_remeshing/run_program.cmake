@@ -1,12 +1,21 @@
 # Runs a program and checks what it did, for tests of the command-line tools:
 #   cmake -DPROGRAM=exe -DARGS="a|b|c" -DEXPECT_EXIT=N [-DEXPECT_OUTPUT=regex]
 #         [-DJSON_FILE=file -DJSON_CHECKS="path.to.field:OP:value|..."] [-DEXPECT_NO_FILE=file]
-#         -P run_program.cmake
+#         [-DFRESH_DIRECTORY=dir] [-DEXPECT_FILES="file|file"] -P run_program.cmake
+# FRESH_DIRECTORY is removed before the run (the program must create it); EXPECT_FILES are
+# removed before the run and must exist after it.
 # OP is EQUAL, LESS, GREATER (numbers) or STREQUAL (strings). A crash (a signal) never matches
 # an expected exit code, so "it failed as it should" cannot pass by crashing.
 string(REPLACE "|" ";" arguments "${ARGS}")
 if(JSON_FILE)
   file(REMOVE "${JSON_FILE}")
+endif()
+if(FRESH_DIRECTORY)
+  file(REMOVE_RECURSE "${FRESH_DIRECTORY}")
+endif()
+string(REPLACE "|" ";" expected_files "${EXPECT_FILES}")
+if(expected_files)
+  file(REMOVE ${expected_files})
 endif()
 if(EXPECT_NO_FILE)
   file(GLOB stale "${EXPECT_NO_FILE}" "${EXPECT_NO_FILE}.part*")
@@ -30,6 +39,11 @@ if(EXPECT_NO_FILE)
     message(FATAL_ERROR "files left behind: ${left}")
   endif()
 endif()
+foreach(expected_file IN LISTS expected_files)
+  if(NOT EXISTS "${expected_file}")
+    message(FATAL_ERROR "the program did not write ${expected_file}")
+  endif()
+endforeach()
 
 if(JSON_FILE)
   file(READ "${JSON_FILE}" json)

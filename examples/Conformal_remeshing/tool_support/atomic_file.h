@@ -10,12 +10,26 @@
 #include <cerrno>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <stdexcept>
 #include <string>
 
 namespace Conformal_remeshing_tools {
+
+// Creates `directory` and its parents if they do not exist yet. Tools call it before their long
+// work, so that an output directory they cannot use is reported at once, not after the run.
+// Throws std::runtime_error naming the directory and the reason.
+inline void prepare_output_directory(const std::string& directory)
+{
+  std::error_code error;
+  std::filesystem::create_directories(directory, error);
+  if(error)
+    throw std::runtime_error("cannot create the directory '" + directory + "': " + error.message());
+  if(!std::filesystem::is_directory(directory, error))
+    throw std::runtime_error("'" + directory + "' is not a directory");
+}
 
 // Calls `write(temporary_path)`, which writes a whole file at that path (with the same
 // extension as `path`, for writers that choose the format by extension), then renames it to
