@@ -163,6 +163,11 @@ TEST(ReferenceComparison, DisplacedCopy)
   EXPECT_LT(c.relative_distance_from_reference, h / diagonal);
   EXPECT_GT(c.area_ratio, 1.);
   EXPECT_FALSE(c.self_intersects);
+  // Where: the raised vertex itself, and a point of the reference under the raised star.
+  EXPECT_EQ(c.farthest_point_to_reference, (std::array<double, 3>{{4., 4., h}}));
+  EXPECT_LT(std::abs(c.farthest_point_from_reference[0] - 4.), 1.);
+  EXPECT_LT(std::abs(c.farthest_point_from_reference[1] - 4.), 1.);
+  EXPECT_EQ(c.farthest_point_from_reference[2], 0.);
 
   // A whole-mesh translation by t along z: both one-sided distances are t.
   Mesh translated = reference;

@@ -83,6 +83,14 @@ inline void write_json(Json_writer& json, const CR::Reference_comparison& c)
   json.field("relative_hausdorff", c.relative_hausdorff_distance());
   json.field("area_ratio", c.area_ratio);
   json.field("self_intersects", c.self_intersects);
+  for(const auto& farthest : {std::make_pair("farthest_point_to_reference", c.farthest_point_to_reference),
+                              std::make_pair("farthest_point_from_reference", c.farthest_point_from_reference)})
+  {
+    json.key(farthest.first).begin_array();
+    for(double x : farthest.second)
+      json.value(x);
+    json.end_array();
+  }
   json.end_object();
 }
 

@@ -32,6 +32,7 @@
 #include <cstddef>
 #include <iterator>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -322,6 +323,9 @@ struct Reference_comparison
   double area_ratio = 0.;
   /// whether the mesh (not the reference) has intersecting faces, by exact predicates
   bool self_intersects = false;
+  /// where the distances are largest: the sample of the mesh farthest from the reference, and
+  /// the sample of the reference farthest from the mesh
+  std::array<double, 3> farthest_point_to_reference{{0., 0., 0.}}, farthest_point_from_reference{{0., 0., 0.}};
 
   /// the larger of the two one-sided relative distances
   double relative_hausdorff_distance() const
@@ -387,7 +391,8 @@ std::vector<CGAL::Simple_cartesian<double>::Point_3> sample_points(const Triangl
   return points;
 }
 
-/// The largest distance from `sample_points(mesh, samples, seed)` to `reference`, as
+/// The largest distance from `sample_points(mesh, samples, seed)` to `reference` and the sample
+/// at that distance, as
 /// `approximate_Hausdorff_distance()` measures it, but with the closest-point queries in plain
 /// double arithmetic: the samples of a remeshing lie on the reference, at distance 0, and CAD
 /// tessellations have flat bounding boxes, so the filtered sphere-box tests of the
@@ -400,7 +405,7 @@ std::vector<CGAL::Simple_cartesian<double>::Point_3> sample_points(const Triangl
 /// 181 s here. The tree holds `well_shaped_cover(reference)`, not the faces: the bounding boxes
 /// of a CAD fan's long slivers cover their whole face, and every query there opened all of them.
 template <typename Concurrency_tag, typename TriangleMesh>
-double largest_distance_of_samples(const TriangleMesh& mesh, const TriangleMesh& reference,
+std::pair<double, std::array<double, 3> > largest_distance_of_samples(const TriangleMesh& mesh, const TriangleMesh& reference,
                                    std::size_t samples, unsigned int seed)
 {
   using Fast = CGAL::Simple_cartesian<double>;
@@ -415,7 +420,7 @@ double largest_distance_of_samples(const TriangleMesh& mesh, const TriangleMesh&
 
   constexpr std::size_t block_size = 4096;
   const std::size_t blocks = (points.size() + block_size - 1) / block_size;
-  std::vector<double> largest_in_block(blocks, 0.);
+  std::vector<std::pair<double, std::size_t> > largest_in_block(blocks, {-1., 0});
   for_each_index<Concurrency_tag>(blocks, [&](std::size_t b) {
     const std::size_t begin = b * block_size, end = (std::min)(points.size(), begin + block_size);
     Fast::Point_3 closest = tree.best_hint(points[begin]).first;
@@ -425,10 +430,14 @@ double largest_distance_of_samples(const TriangleMesh& mesh, const TriangleMesh&
       if(CGAL::squared_distance(points[i], hint) < CGAL::squared_distance(points[i], closest))
         closest = hint;
       closest = tree.closest_point(points[i], closest);
-      largest_in_block[b] = (std::max)(largest_in_block[b], CGAL::squared_distance(points[i], closest));
+      const double squared_distance = CGAL::squared_distance(points[i], closest);
+      if(squared_distance > largest_in_block[b].first)
+        largest_in_block[b] = {squared_distance, i};
     }
   });
-  return std::sqrt(*std::max_element(largest_in_block.begin(), largest_in_block.end()));
+  const auto largest = *std::max_element(largest_in_block.begin(), largest_in_block.end());
+  const Fast::Point_3& farthest = points[largest.second];
+  return {std::sqrt((std::max)(0., largest.first)), {{farthest.x(), farthest.y(), farthest.z()}}};
 }
 
 } // namespace internal
@@ -474,10 +483,12 @@ Reference_comparison compare_to_reference(const TriangleMesh& mesh, const Triang
   result.reference_diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin())
                                         + CGAL::square(box.zmax() - box.zmin()));
   const double unit = result.reference_diagonal > 0. ? result.reference_diagonal : 1.;
-  result.relative_distance_to_reference =
-    internal::largest_distance_of_samples<Concurrency_tag>(mesh, reference, samples_on(mesh), seed) / unit;
-  result.relative_distance_from_reference =
-    internal::largest_distance_of_samples<Concurrency_tag>(reference, mesh, samples_on(reference), seed) / unit;
+  const auto to = internal::largest_distance_of_samples<Concurrency_tag>(mesh, reference, samples_on(mesh), seed);
+  const auto from = internal::largest_distance_of_samples<Concurrency_tag>(reference, mesh, samples_on(reference), seed);
+  result.relative_distance_to_reference = to.first / unit;
+  result.relative_distance_from_reference = from.first / unit;
+  result.farthest_point_to_reference = to.second;
+  result.farthest_point_from_reference = from.second;
   const double reference_area = CGAL::to_double(PMP::area(reference));
   result.area_ratio = reference_area > 0. ? CGAL::to_double(PMP::area(mesh)) / reference_area
                                           : std::numeric_limits<double>::infinity();
