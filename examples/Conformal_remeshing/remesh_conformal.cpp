@@ -16,6 +16,7 @@
 #include "report_json.h"
 
 #include <CGAL/Conformal_remeshing/IO/read_mesh.h>
+#include <CGAL/Conformal_remeshing/flatten_poly_annuli.h>
 #include <CGAL/Conformal_remeshing/mesh_quality.h>
 #include <CGAL/remesh_conformal.h>
 
@@ -254,19 +255,22 @@ int main(int argc, char** argv)
     try
     {
       progress("saving the patches to " + o.save_patches);
+      // The patches remesh_conformal() meshes: the segmentation's, and the halves of those whose
+      // flattening fails or stretches too much.
       CR::Poly_annulus_segmentation segmentation;
       CR::segment_into_poly_annuli(input, segmentation, CR::parameters::snap_distance(0.1 * target, np));
-      const auto patches = segmentation.faces_of_patches();
-      for(std::size_t p = 0; p < patches.size(); ++p)
+      CR::Flattened_poly_annuli flattened;
+      CR::flatten_poly_annuli(segmentation, flattened,
+                              CR::parameters::maximum_edge_length(
+                                2. * target, CR::parameters::snap_distance(
+                                               0.1 * target, CR::parameters::maximum_running_time(remaining_time(), np))));
+      for(std::size_t p = 0; p < flattened.patches.size(); ++p)
       {
-        const CR::Extracted_patch patch = CR::extract_patch(segmentation, patches[p]);
         const std::string name = o.save_patches + "/patch_" + std::to_string(p);
         tools::write_file_atomically_at(name + ".off", [&](const std::string& temporary) {
-          return CGAL::IO::write_polygon_mesh(temporary, patch.mesh, CGAL::parameters::stream_precision(17));
+          return CGAL::IO::write_polygon_mesh(temporary, flattened.patches[p].mesh, CGAL::parameters::stream_precision(17));
         });
-        const CR::Conformal_flattening flat = CR::conformal_flatten(
-          patch.mesh, CR::parameters::maximum_running_time(remaining_time(), CR::parameters::maximum_edge_length(2. * target)));
-        tools::write_file_atomically(name + "_flattening.svg", tools::welded_domain_svg(flat));
+        tools::write_file_atomically(name + "_flattening.svg", tools::welded_domain_svg(flattened.flattenings[p]));
       }
     }
     catch(const CR::Error& e)

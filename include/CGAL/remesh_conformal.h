@@ -9,10 +9,12 @@
 
 #include <CGAL/Conformal_remeshing/Error.h>
 #include <CGAL/Conformal_remeshing/conformal_flatten.h>
+#include <CGAL/Conformal_remeshing/flatten_poly_annuli.h>
 #include <CGAL/Conformal_remeshing/internal/named_parameters.h>
 #include <CGAL/Conformal_remeshing/internal/parallel_for_each_index.h>
 #include <CGAL/Conformal_remeshing/internal/time_limit.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/boundary_curves.h>
+#include <CGAL/Conformal_remeshing/internal/remeshing/flips_after_gluing.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/planar_locator.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/planar_mesher.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/sizing.h>
@@ -45,15 +47,14 @@
 // `relative_target_edge_length(r)` (default 0.01 of the bounding-box diagonal),
 // `minimum_angle(degrees)` (default 28), `corner_angle(degrees)` (default 30),
 // `smoothing_iterations(n)` (default 1), `optimization_rounds(n)` (default 5),
-// `maximum_scale_ratio(r)` (default 1000) and `progress(callable)`.
+// `maximum_scale_ratio(r)` (default 1000) and `progress(callable)` (the last two declared in
+// flatten_poly_annuli.h).
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(target_edge_length)
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(relative_target_edge_length)
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(minimum_angle)
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(corner_angle)
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(smoothing_iterations)
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(optimization_rounds)
-CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(maximum_scale_ratio)
-CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(progress)
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(sizing_field)
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(maximum_chord_error)
 
@@ -89,6 +90,10 @@ struct Remeshing_report
   /// chord and the boundary polyline) and were clamped onto the nearest patch triangle
   std::size_t clamped_vertices = 0;
   std::size_t optimization_flips = 0; ///< edge flips of the optimization on the surface
+  /// edge flips on the glued mesh: between boundary samples for shape, then of triangles below
+  /// 30 degrees; mostly across the cuts between patches (undone, all of them, if they made the
+  /// output intersect itself)
+  std::size_t flips_after_gluing = 0;
   /// wall-clock seconds of the stages (the flattening and meshing stages run patches in parallel)
   double seconds_segmentation = 0., seconds_flattening = 0., seconds_meshing_stage = 0., seconds_gluing = 0.;
   /// seconds summed over the patches (thread time)
@@ -612,14 +617,6 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
     }
   }
 
-  // Only the flattening's own parameters go on to it: the others name the input's maps.
-  const auto flattening_parameters = parameters::maximum_edge_length(
-    2. * h, parameters::annulus_inner_radius(
-              choose_parameter(get_parameter(np, internal_np::annulus_inner_radius), 0.3),
-              parameters::curvature_tolerance(choose_parameter(get_parameter(np, internal_np::curvature_tolerance), 1e-10),
-                                              CGAL::parameters::number_of_iterations(choose_parameter(
-                                                get_parameter(np, CGAL::internal_np::number_of_iterations), 50)))));
-
   // --- segmentation ---------------------------------------------------------------------------
   progress("segmenting into poly-annuli");
   Poly_annulus_segmentation segmentation;
@@ -629,59 +626,14 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
 
   // --- flattening, with bisection of the patches that fail or stretch too much ------------------
   start = Clock::now();
-  std::vector<std::vector<Face> > patch_faces;
-  std::vector<Extracted_patch> patches;
-  std::vector<Conformal_flattening> flattenings;
-  std::vector<std::string> failures;
-  for(int round = 0;; ++round)
-  {
-    patch_faces = segmentation.faces_of_patches();
-    const std::size_t n = patch_faces.size();
-    progress("flattening " + std::to_string(n) + " patches");
-    patches.assign(n, Extracted_patch());
-    flattenings.assign(n, Conformal_flattening());
-    failures.assign(n, std::string());
-    Conformal_remeshing::internal::for_each_index<ConcurrencyTag>(n, [&](std::size_t p) {
-      try
-      {
-        patches[p] = extract_patch(segmentation, patch_faces[p]);
-        flattenings[p] = conformal_flatten(patches[p].mesh, parameters::maximum_running_time(time_limit.remaining(), flattening_parameters));
-        const Flattening_report& r = flattenings[p].report;
-        if(r.status == Error_code::NOT_CONVERGED)
-          failures[p] = std::string(error_message(r.status)) + " (" + r.flow_message + ")";
-        else if(r.status != Error_code::SUCCESS)
-          failures[p] = std::string(error_message(r.status)) + " (" + r.embedding.summary() + ")";
-        else if(r.max_scale > maximum_scale_ratio * r.min_scale)
-          failures[p] = "scale ratio " + std::to_string(r.max_scale / r.min_scale);
-      }
-      catch(const Error& e)
-      {
-        failures[p] = e.what();
-      }
-    });
-    time_limit.check("while flattening the patches"); // before a patch that ran out of time is bisected
-    std::vector<std::size_t> to_bisect;
-    for(std::size_t p = 0; p < n; ++p)
-      if(!failures[p].empty())
-        to_bisect.push_back(p);
-    if(to_bisect.empty())
-      break;
-    if(round == 8)
-      throw Error(flattenings[to_bisect.front()].report.status == Error_code::SUCCESS ? Error_code::NOT_CONVERGED
-                                                                                    : flattenings[to_bisect.front()].report.status,
-                  "remesh_conformal: a patch of " + std::to_string(patch_faces[to_bisect.front()].size())
-                    + " faces cannot be flattened after 8 bisections: " + failures[to_bisect.front()]);
-    for(std::size_t p : to_bisect)
-    {
-      // Said, because the attempt can be most of the time on a large part (issue #7's shield).
-      progress("bisecting a patch of " + std::to_string(patch_faces[p].size()) + " faces: " + failures[p]);
-      ++report.patch_bisections;
-      if(!bisect_patch(segmentation, segmentation.faces_of_patch(p), 2, 0.1 * h))
-        throw Error(Error_code::NOT_CONVERGED, "remesh_conformal: a patch cannot be flattened (" + failures[p]
-                                                 + ") and no plane bisects it");
-    }
-    segmentation.renumber_patches();
-  }
+  Flattened_poly_annuli flattened;
+  // The flattening takes its own parameters from `np` (not the input's maps).
+  internal::flatten_poly_annuli<ConcurrencyTag>(
+    segmentation, flattened, parameters::maximum_edge_length(2. * h, parameters::snap_distance(0.1 * h, np)),
+    time_limit, "remesh_conformal");
+  const std::vector<Extracted_patch>& patches = flattened.patches;
+  const std::vector<Conformal_flattening>& flattenings = flattened.flattenings;
+  report.patch_bisections = flattened.bisections;
   report.number_of_patches = patches.size();
   report.plane_cuts = segmentation.plane_cuts;
   report.feature_edges = segmentation.feature_edges;
@@ -716,6 +668,7 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
   std::vector<std::vector<double> > scales(patches.size()); // each flattening's local scale, once
   std::vector<std::set<std::pair<std::size_t, std::size_t> > > diagonals_to_split;
   std::vector<std::size_t> to_mesh;
+  std::vector<std::string> failures;
   bool resample = true;
   for(int diagonal_round = 0;;)
   {
@@ -833,27 +786,43 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
     throw Error(Error_code::NOT_AN_EMBEDDING, "remesh_conformal: the remeshed patches do not glue into a manifold: "
                                                 + internal::remeshing::describe_glue_defect(triangles, patch_of_triangle, points)
                                                 + " (internal error)");
+  // The patches kept their boundary chords; now a cut's chords can be flipped too: for shape
+  // (edges between two samples), then for triangles below 30 degrees. The flips are undone below
+  // if the output intersects itself with them and not without.
+  auto is_sample = [&](std::size_t i) { return i < samples.points.size(); };
+  internal::remeshing::Glued_soup_flipper flipper(
+    points, triangles, [&](std::size_t a, std::size_t b) { return is_sample(a) && is_sample(b) && samples.is_kept_chord(a, b); },
+    (std::max)(30., min_angle));
+  flipper.shape_passes([&](std::size_t a, std::size_t b) { return is_sample(a) && is_sample(b); }, 3);
+  flipper.angle_passes();
+  const internal::remeshing::Soup_flips& flips = flipper.result();
+  report.flips_after_gluing = flips.flips;
   // Only the points some triangle uses become vertices: the curves are sampled before the patches
   // are meshed, and a sample no patch triangle ends up using must not stay an isolated vertex.
   typedef typename boost::property_traits<decltype(get(CGAL::vertex_point, output))>::value_type Output_point;
-  std::vector<std::size_t> vertex_index(points.size(), 0);
   std::vector<std::size_t> used_points;
-  for(auto& t : triangles)
-    for(std::size_t& c : t)
-    {
-      if(vertex_index[c] == 0)
+  auto glue = [&](std::vector<std::array<std::size_t, 3> > soup) {
+    std::vector<std::size_t> vertex_index(points.size(), 0);
+    used_points.clear();
+    for(auto& t : soup)
+      for(std::size_t& c : t)
       {
-        used_points.push_back(c);
-        vertex_index[c] = used_points.size();
+        if(vertex_index[c] == 0)
+        {
+          used_points.push_back(c);
+          vertex_index[c] = used_points.size();
+        }
+        c = vertex_index[c] - 1;
       }
-      c = vertex_index[c] - 1;
-    }
-  std::vector<Output_point> output_points;
-  output_points.reserve(used_points.size());
-  for(std::size_t i : used_points)
-    output_points.push_back(Output_point(points[i].x(), points[i].y(), points[i].z()));
-  TriangleMesh glued;
-  Polygon_mesh_processing::polygon_soup_to_polygon_mesh(output_points, triangles, glued);
+    std::vector<Output_point> output_points;
+    output_points.reserve(used_points.size());
+    for(std::size_t i : used_points)
+      output_points.push_back(Output_point(points[i].x(), points[i].y(), points[i].z()));
+    TriangleMesh mesh;
+    Polygon_mesh_processing::polygon_soup_to_polygon_mesh(output_points, soup, mesh);
+    return mesh;
+  };
+  TriangleMesh glued = glue(triangles);
   // No self-intersection may be created (exact predicates): such a remeshing is refused, not
   // returned, and one place where it happens is named. Seen where sheets nearly touch (closer
   // than the output's chords deviate from the surface) and where false sharp features cut a bent
@@ -861,26 +830,35 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
   if(Polygon_mesh_processing::does_self_intersect<ConcurrencyTag>(glued)
      && !Polygon_mesh_processing::does_self_intersect<ConcurrencyTag>(input, CGAL::parameters::vertex_point_map(vpm)))
   {
-    typedef typename boost::graph_traits<TriangleMesh>::face_descriptor Glued_face;
-    std::vector<std::pair<Glued_face, Glued_face> > intersecting;
-    Polygon_mesh_processing::self_intersections(glued, std::back_inserter(intersecting));
-    std::ostringstream where;
-    if(!intersecting.empty())
+    if(report.flips_after_gluing > 0)
     {
-      const auto h = halfedge(intersecting.front().first, glued);
-      const auto vp = get(CGAL::vertex_point, glued);
-      const auto& a = get(vp, source(h, glued));
-      const auto& b = get(vp, target(h, glued));
-      const auto& c = get(vp, target(next(h, glued), glued));
-      where << " near (" << (CGAL::to_double(a.x()) + CGAL::to_double(b.x()) + CGAL::to_double(c.x())) / 3. << ", "
-            << (CGAL::to_double(a.y()) + CGAL::to_double(b.y()) + CGAL::to_double(c.y())) / 3. << ", "
-            << (CGAL::to_double(a.z()) + CGAL::to_double(b.z()) + CGAL::to_double(c.z())) / 3. << ")";
+      report.flips_after_gluing = 0;
+      flips.undo(triangles);
+      glued = glue(triangles);
     }
-    throw Error(Error_code::NOT_AN_EMBEDDING,
-                "remesh_conformal: the remeshed patches intersect each other" + where.str()
-                + ", where the input does not intersect itself: two parts of the surface come closer there than the "
-                  "output's chords deviate from it (nearly touching sheets; a smaller target edge length may help), "
-                  "or false sharp features cut a bent surface into many patches (features_angle(0) may help)");
+    if(Polygon_mesh_processing::does_self_intersect<ConcurrencyTag>(glued))
+    {
+      typedef typename boost::graph_traits<TriangleMesh>::face_descriptor Glued_face;
+      std::vector<std::pair<Glued_face, Glued_face> > intersecting;
+      Polygon_mesh_processing::self_intersections(glued, std::back_inserter(intersecting));
+      std::ostringstream where;
+      if(!intersecting.empty())
+      {
+        const auto h = halfedge(intersecting.front().first, glued);
+        const auto vp = get(CGAL::vertex_point, glued);
+        const auto& a = get(vp, source(h, glued));
+        const auto& b = get(vp, target(h, glued));
+        const auto& c = get(vp, target(next(h, glued), glued));
+        where << " near (" << (CGAL::to_double(a.x()) + CGAL::to_double(b.x()) + CGAL::to_double(c.x())) / 3. << ", "
+              << (CGAL::to_double(a.y()) + CGAL::to_double(b.y()) + CGAL::to_double(c.y())) / 3. << ", "
+              << (CGAL::to_double(a.z()) + CGAL::to_double(b.z()) + CGAL::to_double(c.z())) / 3. << ")";
+      }
+      throw Error(Error_code::NOT_AN_EMBEDDING,
+                  "remesh_conformal: the remeshed patches intersect each other" + where.str()
+                  + ", where the input does not intersect itself: two parts of the surface come closer there than the "
+                    "output's chords deviate from it (nearly touching sheets; a smaller target edge length may help), "
+                    "or false sharp features cut a bent surface into many patches (features_angle(0) may help)");
+    }
   }
   output = std::move(glued);
   if(locations != nullptr)

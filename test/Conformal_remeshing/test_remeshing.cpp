@@ -438,6 +438,88 @@ TEST(SurfaceOptimization, AnglePassesRaiseTheTrianglesBelowThirtyDegrees)
     EXPECT_EQ(positions[v], wavy_lift(points[v]));
 }
 
+TEST(FlipsAfterGluing, FlipAThinPairUnlessItsEdgeIsKeptOrTheQuadFolds)
+{
+  // (c, a, b) is a sliver (smallest angle 5.7 degrees) on the edge a-b; flipping a-b into c-d
+  // makes two good triangles.
+  typedef CGAL::Epick::Point_3 P;
+  typedef std::array<std::size_t, 3> T;
+  const std::size_t a = 0, b = 1, c = 2, d = 3;
+  std::vector<P> points{P(0, 0, 0), P(1, 0, 0), P(0.5, -0.05, 0), P(0.5, 0.8, 0.1)};
+  const std::vector<T> pair{T{{c, a, b}}, T{{d, b, a}}};
+  auto smallest_angle = [&](const std::vector<T>& triangles) {
+    double smallest = 180.;
+    for(const T& t : triangles)
+    {
+      const std::array<double, 3> angles = CR::triangle_quality(points[t[0]], points[t[1]], points[t[2]]).angles;
+      smallest = (std::min)(smallest, *std::min_element(angles.begin(), angles.end()));
+    }
+    return smallest;
+  };
+  auto no_edge_is_kept = [](std::size_t, std::size_t) { return false; };
+
+  std::vector<T> triangles = pair;
+  const RM::Soup_flips flips = RM::flip_small_angles_after_gluing(points, triangles, no_edge_is_kept, 30.);
+  EXPECT_EQ(flips.flips, 1u);
+  EXPECT_EQ(triangles, (std::vector<T>{T{{c, a, d}}, T{{c, d, b}}}));
+  EXPECT_LT(smallest_angle(pair), 6.);
+  EXPECT_GT(smallest_angle(triangles), 20.);
+  flips.undo(triangles);
+  EXPECT_EQ(triangles, pair);
+
+  // A kept edge (a feature's or a border's chord) stays.
+  triangles = pair;
+  auto ab_is_kept = [&](std::size_t i, std::size_t j) { return std::minmax(i, j) == std::minmax(a, b); };
+  EXPECT_EQ(RM::flip_small_angles_after_gluing(points, triangles, ab_is_kept, 30.).flips, 0u);
+  EXPECT_EQ(triangles, pair);
+
+  // A concave quad (c and d both beyond b): the flipped triangles would overlap, though their
+  // unsigned angles (28 degrees against 10.6) would be better. Refused.
+  points[c] = P(1.28, -0.24, 0);
+  points[d] = P(1.49, 0.51, 0);
+  triangles = pair;
+  EXPECT_EQ(RM::flip_small_angles_after_gluing(points, triangles, no_edge_is_kept, 30.).flips, 0u);
+  EXPECT_EQ(triangles, pair);
+
+  // A pair bent by 76 degrees whose flip would raise the smallest angle from 27.5 to 35.5 degrees
+  // but bend the new pair by 100: a sharper crease than the surface had. Refused.
+  points[c] = P(0.08, -0.57, 0);
+  points[d] = P(0.03, 0.12, -0.49);
+  triangles = pair;
+  EXPECT_EQ(RM::flip_small_angles_after_gluing(points, triangles, no_edge_is_kept, 30.).flips, 0u);
+  EXPECT_EQ(triangles, pair);
+}
+
+TEST(FlipsAfterGluing, ShapePassesFlipTheChosenEdgesOnly)
+{
+  // Two triangles with an angle of 118 degrees at c and d (skewness 0.48), none below 30: the
+  // angle passes leave them; the shape passes flip a-b into c-d (skewness 0.02) where asked.
+  typedef CGAL::Epick::Point_3 P;
+  typedef std::array<std::size_t, 3> T;
+  const std::size_t a = 0, b = 1, c = 2, d = 3;
+  const std::vector<P> points{P(0, 0, 0), P(1, 0, 0), P(0.5, -0.3, 0), P(0.5, 0.3, 0)};
+  const std::vector<T> pair{T{{c, a, b}}, T{{d, b, a}}};
+  auto no_edge_is_kept = [](std::size_t, std::size_t) { return false; };
+  auto every_edge = [](std::size_t, std::size_t) { return true; };
+  auto no_edge = [](std::size_t, std::size_t) { return false; };
+
+  std::vector<T> triangles = pair;
+  RM::Glued_soup_flipper angles_only(points, triangles, no_edge_is_kept, 30.);
+  angles_only.angle_passes();
+  EXPECT_EQ(angles_only.result().flips, 0u);
+  RM::Glued_soup_flipper not_chosen(points, triangles, no_edge_is_kept, 30.);
+  not_chosen.shape_passes(no_edge, 3);
+  EXPECT_EQ(not_chosen.result().flips, 0u);
+  EXPECT_EQ(triangles, pair);
+
+  RM::Glued_soup_flipper chosen(points, triangles, no_edge_is_kept, 30.);
+  chosen.shape_passes(every_edge, 3);
+  EXPECT_EQ(chosen.result().flips, 1u);
+  EXPECT_EQ(triangles, (std::vector<T>{T{{c, a, d}}, T{{c, d, b}}}));
+  EXPECT_LT(RM::Triangle_shape::skewness(points[c], points[a], points[d]), 0.05);
+  EXPECT_GT(RM::Triangle_shape::skewness(points[c], points[a], points[b]), 0.45);
+}
+
 TEST(SurfaceOptimization, LeavesANonManifoldInputAsIs)
 {
   // Three triangles on the edge (0, 1).

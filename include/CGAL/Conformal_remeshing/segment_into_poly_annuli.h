@@ -57,6 +57,8 @@ struct Poly_annulus_segmentation
   Mesh::Property_map<Face, std::size_t> patch;
   Mesh::Property_map<Face, std::size_t> input_face;
   Mesh::Property_map<Edge, bool> is_feature;
+  /// edges between two user patches (`face_patch_map`): kept in the output like the features
+  Mesh::Property_map<Edge, bool> is_user_border;
   std::size_t number_of_patches = 0;
   std::size_t feature_edges = 0;
   /// feature edges inside a patch (the same patch on both sides): the patch is slit open along them
@@ -72,6 +74,7 @@ struct Poly_annulus_segmentation
     patch = mesh.add_property_map<Face, std::size_t>("f:patch", 0).first;
     input_face = mesh.add_property_map<Face, std::size_t>("f:input_face", 0).first;
     is_feature = mesh.add_property_map<Edge, bool>("e:feature", false).first;
+    is_user_border = mesh.add_property_map<Edge, bool>("e:user_border", false).first;
     number_of_patches = feature_edges = dangling_feature_edges = plane_cuts = 0;
   }
   Poly_annulus_segmentation(const Poly_annulus_segmentation&) = delete;
@@ -320,14 +323,14 @@ inline bool cut_by_plane(Segmentation& s, const std::vector<Segmentation::Face>&
     const Epick::Point_3 a = m.point(m.source(h)), b = m.point(m.target(h));
     const double da = distance(m.source(h)), db = distance(m.target(h));
     const double t = da / (da - db);
-    const bool feature = s.is_feature[e];
+    const bool feature = s.is_feature[e], user_border = s.is_user_border[e];
     const Mesh::Halfedge_index to_new = CGAL::Euler::split_edge(h, m);
     const Segmentation::Vertex v = m.target(to_new);
     m.point(v) = Epick::Point_3(a.x() + t * (b.x() - a.x()), a.y() + t * (b.y() - a.y()), a.z() + t * (b.z() - a.z()));
     side[v] = 0;
     on_cut.push_back(v);
-    s.is_feature[m.edge(to_new)] = feature;
-    s.is_feature[e] = feature;
+    s.is_feature[m.edge(to_new)] = s.is_feature[e] = feature;
+    s.is_user_border[m.edge(to_new)] = s.is_user_border[e] = user_border;
     for(auto g : {to_new, m.opposite(to_new)})
       if(!m.is_border(g))
         touched.push_back(m.face(g));
@@ -619,7 +622,7 @@ inline bool bisect_patch(Poly_annulus_segmentation& s, const std::vector<Poly_an
 ///     \cgalParamDefault{60}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{face_patch_map}
-///     \cgalParamDescription{user patches: a property map from faces to patch ids; their borders are cuts}
+///     \cgalParamDescription{user patches: a property map from faces to patch ids; their borders are cuts, kept as chains of output edges by `remesh_conformal()`}
 ///     \cgalParamDefault{none}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{cut_planes}
@@ -700,6 +703,8 @@ void segment_into_poly_annuli(const TriangleMesh& input, Poly_annulus_segmentati
       by_index[get(fim, f)] = label[f];
     for(Face f : s.mesh.faces())
       s.patch[f] = by_index[s.input_face[f]];
+    for(Poly_annulus_segmentation::Edge e : s.mesh.edges())
+      s.is_user_border[e] = s.is_patch_boundary(e) && !s.mesh.is_border(e);
   }
   s.renumber_patches();
   const std::vector<Epick::Plane_3> planes = choose_parameter(get_parameter(np, internal_np::cut_planes), std::vector<Epick::Plane_3>());

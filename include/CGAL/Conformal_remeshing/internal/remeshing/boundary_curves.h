@@ -36,6 +36,16 @@ struct Curve_samples
   std::size_t number_of_curves = 0;
   /// the curve of each chord between consecutive samples of a curve, by its sample pair (smaller first)
   std::map<std::pair<std::size_t, std::size_t>, std::size_t> curve_of_chord;
+  /// whether the chords of each curve must stay output edges: curves along a sharp feature, a
+  /// border or a user patch border (a curve with any such edge); the others are cuts
+  std::vector<char> is_kept_curve;
+
+  /// whether the segment between samples `i` and `j` is a chord of a kept curve
+  bool is_kept_chord(std::size_t i, std::size_t j) const
+  {
+    const auto found = curve_of_chord.find(std::minmax(i, j));
+    return found != curve_of_chord.end() && is_kept_curve[found->second];
+  }
 };
 
 /// Splits the patch boundaries of `s` (edges between two patches, borders, and sharp features
@@ -114,6 +124,16 @@ inline Curve_samples sample_boundary_curves(const Poly_annulus_segmentation& s, 
 
   Curve_samples samples;
   samples.number_of_curves = curves.size();
+  for(const auto& curve : curves)
+  {
+    bool kept = false;
+    for(std::size_t i = 0; i + 1 < curve.size() && !kept; ++i)
+    {
+      const auto e = m.edge(m.halfedge(curve[i], curve[i + 1]));
+      kept = s.is_feature[e] || s.is_user_border[e] || m.is_border(e);
+    }
+    samples.is_kept_curve.push_back(kept);
+  }
   auto any_face = [&](Halfedge h) { return m.is_border(h) ? m.face(m.opposite(h)) : m.face(h); };
   auto vertex_sample = [&](Vertex v) {
     auto found = samples.at_vertex.find(v);

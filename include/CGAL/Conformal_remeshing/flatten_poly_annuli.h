@@ -1,0 +1,170 @@
+// Copyright (c) 2026 CGAL Conformal Remeshing contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Every patch of a segmentation flattened, with bisection of the patches whose flattening fails
+// or stretches too much: the stage of `remesh_conformal()` between the segmentation and the
+// planar meshing, also on its own for pictures of the patches and their flattenings.
+
+#ifndef CGAL_CONFORMAL_REMESHING_FLATTEN_POLY_ANNULI_H
+#define CGAL_CONFORMAL_REMESHING_FLATTEN_POLY_ANNULI_H
+
+#include <CGAL/Conformal_remeshing/Error.h>
+#include <CGAL/Conformal_remeshing/conformal_flatten.h>
+#include <CGAL/Conformal_remeshing/internal/named_parameters.h>
+#include <CGAL/Conformal_remeshing/internal/parallel_for_each_index.h>
+#include <CGAL/Conformal_remeshing/internal/time_limit.h>
+#include <CGAL/Conformal_remeshing/segment_into_poly_annuli.h>
+
+#include <CGAL/Named_function_parameters.h>
+#include <CGAL/tags.h>
+
+#include <functional>
+#include <string>
+#include <vector>
+
+// `maximum_scale_ratio(r)` (default 1000): a patch whose local scale varies more is bisected.
+// `progress(callable)`: told when each stage starts.
+CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(maximum_scale_ratio)
+CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(progress)
+
+namespace CGAL {
+namespace Conformal_remeshing {
+
+/// \ingroup PkgConformalRemeshingRef
+/// The patches of a segmentation, each extracted and flattened (see `flatten_poly_annuli()`).
+struct Flattened_poly_annuli
+{
+  std::vector<std::vector<Poly_annulus_segmentation::Face> > faces; ///< the faces of each patch in the segmented mesh
+  std::vector<Extracted_patch> patches;
+  std::vector<Conformal_flattening> flattenings;
+  std::size_t bisections = 0; ///< patches bisected because their flattening failed or stretched too much
+};
+
+namespace internal {
+
+// `flatten_poly_annuli()` with the time limit and the name (for messages) of its caller.
+template <typename ConcurrencyTag, typename NamedParameters>
+void flatten_poly_annuli(Poly_annulus_segmentation& segmentation, Flattened_poly_annuli& result, const NamedParameters& np,
+                         const Time_limit& time_limit, const std::string& caller)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef Poly_annulus_segmentation::Face Face;
+  const std::function<void(const std::string&)> progress =
+    choose_parameter(get_parameter(np, internal_np::progress), [](const std::string&) {});
+  const double maximum_scale_ratio = choose_parameter(get_parameter(np, internal_np::maximum_scale_ratio), 1000.);
+  if(!(maximum_scale_ratio > 1.))
+    throw Error(Error_code::INVALID_INPUT, caller + ": the maximum scale ratio must be above 1");
+  const double snap = choose_parameter(get_parameter(np, internal_np::snap_distance), 0.);
+  // Only the flattening's own parameters go on to it: the others name the input's maps.
+  const auto flattening_parameters = parameters::maximum_edge_length(
+    choose_parameter(get_parameter(np, internal_np::maximum_edge_length), 0.),
+    parameters::annulus_inner_radius(
+      choose_parameter(get_parameter(np, internal_np::annulus_inner_radius), 0.3),
+      parameters::curvature_tolerance(choose_parameter(get_parameter(np, internal_np::curvature_tolerance), 1e-10),
+                                      CGAL::parameters::number_of_iterations(
+                                        choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 50)))));
+
+  result = Flattened_poly_annuli();
+  std::vector<std::string> failures;
+  for(int round = 0;; ++round)
+  {
+    result.faces = segmentation.faces_of_patches();
+    const std::size_t n = result.faces.size();
+    progress("flattening " + std::to_string(n) + " patches");
+    result.patches.assign(n, Extracted_patch());
+    result.flattenings.assign(n, Conformal_flattening());
+    failures.assign(n, std::string());
+    for_each_index<ConcurrencyTag>(n, [&](std::size_t p) {
+      try
+      {
+        result.patches[p] = extract_patch(segmentation, result.faces[p]);
+        result.flattenings[p] =
+          conformal_flatten(result.patches[p].mesh, parameters::maximum_running_time(time_limit.remaining(), flattening_parameters));
+        const Flattening_report& r = result.flattenings[p].report;
+        if(r.status == Error_code::NOT_CONVERGED)
+          failures[p] = std::string(error_message(r.status)) + " (" + r.flow_message + ")";
+        else if(r.status != Error_code::SUCCESS)
+          failures[p] = std::string(error_message(r.status)) + " (" + r.embedding.summary() + ")";
+        else if(r.max_scale > maximum_scale_ratio * r.min_scale)
+          failures[p] = "scale ratio " + std::to_string(r.max_scale / r.min_scale);
+      }
+      catch(const Error& e)
+      {
+        failures[p] = e.what();
+      }
+    });
+    time_limit.check("while flattening the patches"); // before a patch that ran out of time is bisected
+    std::vector<std::size_t> to_bisect;
+    for(std::size_t p = 0; p < n; ++p)
+      if(!failures[p].empty())
+        to_bisect.push_back(p);
+    if(to_bisect.empty())
+      return;
+    const std::size_t first = to_bisect.front();
+    if(round == 8)
+      throw Error(result.flattenings[first].report.status == Error_code::SUCCESS ? Error_code::NOT_CONVERGED
+                                                                                 : result.flattenings[first].report.status,
+                  caller + ": a patch of " + std::to_string(result.faces[first].size())
+                    + " faces cannot be flattened after 8 bisections: " + failures[first]);
+    for(std::size_t p : to_bisect)
+    {
+      // Said, because the attempt can be most of the time on a large part (issue #7's shield).
+      progress("bisecting a patch of " + std::to_string(result.faces[p].size()) + " faces: " + failures[p]);
+      ++result.bisections;
+      if(!bisect_patch(segmentation, segmentation.faces_of_patch(p), 2, snap))
+        throw Error(Error_code::NOT_CONVERGED, caller + ": a patch cannot be flattened (" + failures[p] + ") and no plane bisects it");
+    }
+    segmentation.renumber_patches();
+  }
+}
+
+} // namespace internal
+
+/// \ingroup PkgConformalRemeshingRef
+/// Flattens every patch of `segmentation` (made by `segment_into_poly_annuli()`) with
+/// `conformal_flatten()`, as `remesh_conformal()` does: a patch whose flattening fails, or whose
+/// local scale varies by more than `maximum_scale_ratio`, is bisected by a plane
+/// (`bisect_patch()`) and the patches are flattened again, up to 8 rounds. `segmentation` then
+/// has the patches of `result`.
+///
+/// \tparam ConcurrencyTag `CGAL::Parallel_if_available_tag` (the default: patches are flattened
+///         in parallel when CGAL is linked with TBB), `CGAL::Parallel_tag` or `CGAL::Sequential_tag`
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{maximum_scale_ratio}
+///     \cgalParamDescription{a patch whose largest local scale exceeds its smallest by more than this is bisected (`Conformal_remeshing::parameters::maximum_scale_ratio()`)}
+///     \cgalParamDefault{1000}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{snap_distance}
+///     \cgalParamDescription{vertices closer than this to a bisecting plane are taken as on it (`Conformal_remeshing::parameters::snap_distance()`; `remesh_conformal()` passes a tenth of the target edge length)}
+///     \cgalParamDefault{0}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{progress}
+///     \cgalParamDescription{a callable `void(const std::string& stage)` told when each round starts and why a patch is bisected (`Conformal_remeshing::parameters::progress()`)}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
+///   \cgalParamNBegin{maximum_running_time}
+///     \cgalParamDescription{a limit in seconds on the wall-clock time of the call (`Conformal_remeshing::parameters::maximum_running_time()`)}
+///     \cgalParamDefault{no limit}
+///   \cgalParamNEnd
+/// \cgalNamedParamsEnd
+/// `maximum_edge_length`, `annulus_inner_radius`, `curvature_tolerance` and
+/// `number_of_iterations` are passed on to `conformal_flatten()`.
+///
+/// \throws Error with the flattening's code when a patch cannot be flattened even after 8
+///         bisections or no plane bisects it, with `Error_code::TIME_LIMIT_EXCEEDED` past the
+///         `maximum_running_time`, with `Error_code::INVALID_INPUT` for a scale ratio not above 1
+template <typename ConcurrencyTag = CGAL::Parallel_if_available_tag,
+          typename NamedParameters = CGAL::parameters::Default_named_parameters>
+void flatten_poly_annuli(Poly_annulus_segmentation& segmentation, Flattened_poly_annuli& result,
+                         const NamedParameters& np = CGAL::parameters::default_values())
+{
+  internal::flatten_poly_annuli<ConcurrencyTag>(segmentation, result, np, internal::Time_limit::from(np, "flatten_poly_annuli"),
+                                                "flatten_poly_annuli");
+}
+
+} // namespace Conformal_remeshing
+} // namespace CGAL
+
+#endif // CGAL_CONFORMAL_REMESHING_FLATTEN_POLY_ANNULI_H
