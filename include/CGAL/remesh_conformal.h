@@ -15,6 +15,7 @@
 #include <CGAL/Conformal_remeshing/internal/time_limit.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/boundary_curves.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/flips_after_gluing.h>
+#include <CGAL/Conformal_remeshing/internal/remeshing/kept_input_vertices.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/planar_locator.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/planar_mesher.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/sizing.h>
@@ -171,6 +172,10 @@ inline std::vector<double> local_scale(const Conformal_flattening& flat)
 // spherical cap and a distance to the input 1.06 times its own (1.18 with 1.4), but a mean
 // skewness above issue #5's bar of 0.12 on the CAD plates (the boundary samples stay h apart).
 constexpr double longest_edge_factor = 1.4;
+
+// An input vertex whose tip the output would cut by more than this times the target length is
+// kept as an output vertex (see kept_input_vertices.h).
+constexpr double kept_tip_tolerance = 0.1;
 
 // One patch, remeshed: its boundary samples (indices into the curve samples), its interior
 // points on the surface, and triangles whose corners index the boundary samples first, then
@@ -338,8 +343,16 @@ inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, c
           for(std::size_t j : positions[pair.second])
             local_diagonals_to_split.emplace_back(i, j);
   }
+  // The tips of a coarse input are kept as vertices (see kept_input_vertices.h).
+  std::vector<Epick::Point_3> sample_points;
+  for(const auto& loop : loops)
+    for(const Boundary_sample& s : loop)
+      sample_points.push_back(s.point);
+  std::vector<Epick::Point_2> fixed_points;
+  for(std::size_t v : kept_input_vertices(patch, sizing.target(), kept_tip_tolerance, sample_points))
+    fixed_points.push_back(flat.uv[v]);
   Planar_mesh planar = mesh_planar_domain<Epick>(loops, min_angle, planar_size, smoothing_iterations, false,
-                                                 local_diagonals_to_split);
+                                                 local_diagonals_to_split, fixed_points);
   if(planar.number_of_samples != result.boundary_ids.size())
     throw Error(Error_code::NOT_AN_EMBEDDING, "remesh_conformal: the boundary samples of a patch overlap in the plane");
   result.seconds_planar_meshing = std::chrono::duration<double>(Clock::now() - start).count();
@@ -363,7 +376,7 @@ inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, c
         positions.push_back(s.point);
     for(std::size_t i = planar.number_of_samples; i < planar.points.size(); ++i)
       positions.push_back(flat.surface_point(surface_map.lift(planar.points[i]).on_patch));
-    result.flips = optimize_on_surface(planar.points, positions, planar.triangles, planar.number_of_samples, lift,
+    result.flips = optimize_on_surface(planar.points, positions, planar.triangles, planar.number_of_fixed_points, lift,
                                        min_angle, longest_edge_factor * sizing.target(), optimization_rounds, result.boundary_ids,
                                        diagonals_to_split).flips;
   }

@@ -213,12 +213,13 @@ private:
   Faces_level faces_;
 };
 
-/// A planar triangle mesh: the boundary samples first, in loop order, then the points the
-/// refinement added.
+/// A planar triangle mesh: the boundary samples first, in loop order, then the fixed interior
+/// points in their order, then the points the refinement added.
 struct Planar_mesh
 {
   std::vector<Epick::Point_2> points;
   std::size_t number_of_samples = 0;
+  std::size_t number_of_fixed_points = 0; ///< the samples and the fixed interior points
   std::vector<std::array<int, 3> > triangles; // counterclockwise
 };
 
@@ -324,10 +325,13 @@ void separate_images_of_one_sample(CDT& cdt, const std::vector<std::vector<Bound
 /// refinement only adds edges at new points, it never comes back. Last, a vertex joined to two
 /// images of one sample (`Boundary_sample::id`: the sides of a slit, near its tip) would join
 /// one surface point twice: the edge to one of them is split at its midpoint, until none is left.
+/// The `fixed_points` (inside the domain, apart from the loops) are vertices of the mesh that the
+/// smoothing does not move.
 template <typename Kernel, typename Size_field>
 Planar_mesh mesh_planar_domain(const std::vector<std::vector<Boundary_sample> >& loops, double min_angle_degrees,
                                const Size_field& size, int smoothing_iterations, bool split_boundary = true,
-                               const std::vector<std::pair<std::size_t, std::size_t> >& diagonals_to_split = {})
+                               const std::vector<std::pair<std::size_t, std::size_t> >& diagonals_to_split = {},
+                               const std::vector<Epick::Point_2>& fixed_points = {})
 {
   typedef CGAL::Delaunay_mesh_vertex_base_2<Kernel> Vb;
   typedef CGAL::Delaunay_mesh_face_base_2<Kernel> Fb;
@@ -391,6 +395,9 @@ Planar_mesh mesh_planar_domain(const std::vector<std::vector<Boundary_sample> >&
     for(std::size_t i = 0; i < handles.size(); ++i)
       cdt.insert_constraint(handles[i], handles[(i + 1) % handles.size()]);
   }
+  std::set<Point> fixed;
+  for(const Epick::Point_2& p : fixed_points)
+    fixed.insert(cdt.insert(Point(p.x(), p.y()))->point());
   refine(cdt);
 
   for(int iteration = 0; iteration < smoothing_iterations; ++iteration)
@@ -404,6 +411,11 @@ Planar_mesh mesh_planar_domain(const std::vector<std::vector<Boundary_sample> >&
     {
       if(cdt.are_there_incident_constraints(v))
         continue;
+      if(fixed.count(v->point()))
+      {
+        free_points.push_back(v->point());
+        continue;
+      }
       // The mean of the neighbours in the surface's metric: the plane is scaled by the size field,
       // so each neighbour weighs 1 / size^2 at the edge's midpoint.
       double x = 0., y = 0., n = 0.;
@@ -456,6 +468,14 @@ Planar_mesh mesh_planar_domain(const std::vector<std::vector<Boundary_sample> >&
         result.points.push_back(s.uv);
     }
   result.number_of_samples = result.points.size();
+  for(const Epick::Point_2& p : fixed_points)
+  {
+    const Vertex_handle v = vertex_at(cdt, Point(p.x(), p.y()));
+    if(v == Vertex_handle() || !index.emplace(v, int(result.points.size())).second)
+      throw Error(Error_code::INVALID_INPUT, "planar meshing lost a fixed point (internal error)");
+    result.points.push_back(p);
+  }
+  result.number_of_fixed_points = result.points.size();
   for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
     if(index.emplace(v, int(result.points.size())).second)
       result.points.push_back(Epick::Point_2(CGAL::to_double(v->point().x()), CGAL::to_double(v->point().y())));
