@@ -369,11 +369,8 @@ inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, c
     const auto lift = [&](const Epick::Point_2& p, const Epick::Point_2& near) {
       return flat.surface_point(surface_map.lift(p, &near).on_patch);
     };
-    std::vector<Epick::Point_3> positions;
+    std::vector<Epick::Point_3> positions(sample_points); // the samples, in loop order, first
     positions.reserve(planar.points.size());
-    for(const auto& loop : loops)
-      for(const Boundary_sample& s : loop)
-        positions.push_back(s.point);
     for(std::size_t i = planar.number_of_samples; i < planar.points.size(); ++i)
       positions.push_back(flat.surface_point(surface_map.lift(planar.points[i]).on_patch));
     result.flips = optimize_on_surface(planar.points, positions, planar.triangles, planar.number_of_fixed_points, lift,

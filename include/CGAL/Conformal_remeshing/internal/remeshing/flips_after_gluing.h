@@ -114,10 +114,21 @@ public:
   /// equiangle skewness of its two triangles by 0.01 or more, in up to `passes` passes.
   void shape_passes(const Edge_predicate& is_candidate, int passes)
   {
+    // The triangles with a chosen edge, listed once (in order): a flip gives new edges only to
+    // its two triangles, which share a chosen edge and so are both listed. On a remeshing these
+    // are the few triangles along the patch boundaries, not the whole mesh at every pass.
+    std::vector<std::size_t> listed;
+    for(std::size_t t = 0; t < triangles_.size(); ++t)
+      for(int k = 0; k < 3; ++k)
+        if(is_candidate(triangles_[t][k], triangles_[t][(k + 1) % 3]))
+        {
+          listed.push_back(t);
+          break;
+        }
     for(int pass = 0; pass < passes; ++pass)
     {
       const std::size_t flips_before = result_.flips;
-      for(std::size_t t = 0; t < triangles_.size(); ++t)
+      for(std::size_t t : listed)
         for(int k = 0; k < 3; ++k)
         {
           const Triangle& tri = triangles_[t];
