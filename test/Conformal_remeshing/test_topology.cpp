@@ -2,9 +2,11 @@
 // patch boundaries glued into one watertight mesh, features, user patches and cutting planes.
 
 #include <CGAL/Conformal_remeshing/IO/read_mesh.h>
+#include <CGAL/Conformal_remeshing/flatten_poly_annuli.h>
 #include <CGAL/Conformal_remeshing/segment_into_poly_annuli.h>
 
 #include "cad_like_models.h"
+#include "expect_error.h"
 #include "remeshing_checks.h"
 
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
@@ -347,6 +349,33 @@ TEST(RemeshAnyTopology, CgalElephantGenusThree)
   ASSERT_EQ(CR::check_mesh(elephant).total_genus(), 3);
   const CR::Remeshing_report report = check_remeshing(elephant, remeshing_checks::Quality_bars(16.5).mean_skewness_at_most(0.126));
   EXPECT_GT(report.flips_after_gluing, 0u);
+}
+
+// flatten_poly_annuli() alone: the elephant's 8 segmented patches, some bisected because their
+// flattening stretched too much, end as the patches it returns, every one flattened; the
+// segmentation holds the same patches. A scale ratio not above 1 is refused.
+TEST(RemeshAnyTopology, FlattenPolyAnnuliBisectsAndReturnsTheFinalPatches)
+{
+  Mesh elephant;
+  ASSERT_TRUE(CR::read_and_check_mesh(std::string(CONFORMAL_REMESHING_CGAL_DATA) + "/meshes/elephant.off", elephant).is_valid());
+  const double h = 0.01 * diagonal(elephant);
+  CR::Poly_annulus_segmentation segmentation;
+  CR::segment_into_poly_annuli(elephant, segmentation, CR::parameters::snap_distance(0.1 * h));
+  const std::size_t segmented = segmentation.number_of_patches;
+  CR::Flattened_poly_annuli flattened;
+  CR::flatten_poly_annuli(segmentation, flattened, CR::parameters::maximum_edge_length(2. * h, CR::parameters::snap_distance(0.1 * h)));
+  EXPECT_GT(flattened.bisections, 0u);
+  EXPECT_GT(flattened.patches.size(), segmented); // a bisection can leave more than two pieces
+  EXPECT_EQ(flattened.patches.size(), segmentation.number_of_patches);
+  ASSERT_EQ(flattened.flattenings.size(), flattened.patches.size());
+  for(std::size_t p = 0; p < flattened.patches.size(); ++p)
+  {
+    EXPECT_TRUE(flattened.patches[p].is_poly_annulus());
+    EXPECT_EQ(flattened.flattenings[p].report.status, CR::Error_code::SUCCESS);
+    EXPECT_EQ(flattened.faces[p].size(), segmentation.faces_of_patch(p).size());
+  }
+  test_support::expect_error([&] { CR::flatten_poly_annuli(segmentation, flattened, CR::parameters::maximum_scale_ratio(1.)); },
+                             CR::Error_code::INVALID_INPUT, {"flatten_poly_annuli: the maximum scale ratio must be above 1"});
 }
 
 // CGAL's joint (genus 2, CAD slivers down to 0.5 degrees): all of issue #6's shape bars.
