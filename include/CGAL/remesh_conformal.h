@@ -287,17 +287,10 @@ public:
   }
 
 private:
-  struct Hash
-  {
-    std::size_t operator()(const std::pair<double, double>& p) const
-    {
-      return std::hash<double>()(p.first) ^ (std::hash<double>()(p.second) * 0x9e3779b97f4a7c15ull);
-    }
-  };
   const Conformal_flattening& flat_;
   const Planar_locator& locator_;
   std::size_t hint_ = Planar_locator::no_hint; // the last point's triangle: lifts come in neighbourhoods
-  std::unordered_map<std::pair<double, double>, Lifted, Hash> lifted_;
+  std::unordered_map<std::pair<double, double>, Lifted, Planar_point_hash> lifted_;
 };
 
 // Planar Delaunay refinement of a flattened patch with the shared boundary samples, then the

@@ -28,8 +28,9 @@ namespace internal {
 namespace remeshing {
 
 /// The vertices of `patch` (indices in `patch.mesh`) off its border that are tips the output
-/// would cut by more than `tolerance` times the target length `h`: cones of angle deficit above
-/// half a radian (a crease's vertices have none: keeping them pinned the optimization on the
+/// would cut by more than `tolerance` times the target length `h`: vertices whose angle sum differs
+/// from a full turn by more than half a radian, cones or saddles (a crease's vertices have no
+/// such defect: keeping them pinned the optimization on the
 /// fandisk's smooth creases and on the elephant's coarse ridges) whose height over the centroid
 /// of their ring, along the ring's normal, scaled to the distance at which the nearest output
 /// vertices are expected (0.6 `h`, or the ring's mean radius if shorter), exceeds the tolerance.

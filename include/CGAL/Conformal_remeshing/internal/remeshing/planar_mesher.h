@@ -19,6 +19,7 @@
 #include <CGAL/Mesh_2/Refine_faces.h>
 
 #include <cmath>
+#include <functional>
 #include <list>
 #include <map>
 #include <memory>
@@ -31,6 +32,15 @@ namespace CGAL {
 namespace Conformal_remeshing {
 namespace internal {
 namespace remeshing {
+
+/// Hash of a planar point's coordinates, for the maps that remember what was computed at a point.
+struct Planar_point_hash
+{
+  std::size_t operator()(const std::pair<double, double>& p) const
+  {
+    return std::hash<double>()(p.first) ^ (std::hash<double>()(p.second) * 0x9e3779b97f4a7c15ull);
+  }
+};
 
 /// A boundary sample: its planar position and the surface point it stands for.
 struct Boundary_sample
@@ -120,14 +130,7 @@ class Size_field_criteria_2 : public CGAL::Delaunay_mesh_size_criteria_2<CDT>
 {
   typedef CGAL::Delaunay_mesh_size_criteria_2<CDT> Base;
 
-  struct Point_hash
-  {
-    std::size_t operator()(const std::pair<double, double>& p) const
-    {
-      return std::hash<double>()(p.first) ^ (std::hash<double>()(p.second) * 0x9e3779b97f4a7c15ull);
-    }
-  };
-  typedef std::unordered_map<std::pair<double, double>, double, Point_hash> Corner_sizes;
+  typedef std::unordered_map<std::pair<double, double>, double, Planar_point_hash> Corner_sizes;
 
 public:
   typedef typename Base::Quality Quality;
