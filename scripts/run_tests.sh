@@ -1,14 +1,15 @@
 #!/usr/bin/env bash
 # Installs what the tests need, builds everything and runs the whole test suite through CTest.
 # Exits non-zero when any test fails. Tests are built with -O2 but without NDEBUG, so CGAL's
-# own assertions stay active.
+# own assertions stay active. The benchmark programs the tests do not run are left out of the
+# build (benchmark/Conformal_remeshing/CMakeLists.txt); build them with the benchmarks' scripts.
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 cd "$root"
 bash scripts/install_dependencies.sh --tests
 build="$root/build/tests"
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O2" \
-      -DCGAL_CONFORMAL_REMESHING_REQUIRE_ALL_TESTS=ON >/dev/null
+      -DCGAL_CONFORMAL_REMESHING_REQUIRE_ALL_TESTS=ON -DCGAL_CONFORMAL_REMESHING_BUILD_BENCHMARKS=OFF >/dev/null
 cmake --build "$build" -j"$(nproc)"
 cd "$build"
 ctest --output-on-failure -j"$(nproc)" --timeout 1200
