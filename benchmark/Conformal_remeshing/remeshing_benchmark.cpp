@@ -3,35 +3,51 @@
 // and on any mesh files given. For each: times (median of 3 runs), output size, minimum angle,
 // share of triangles below 25 degrees, mean equiangle skewness, share of edges within
 // [0.7, 1.4] x target, Hausdorff distance both ways relative to the diagonal, self-intersection.
-// Prints a table and writes JSON.
+// Prints a table and writes JSON (atomically, at the end). With --save-meshes DIR, also writes
+// each model's two outputs as OFF files (and the input of the generated models) into DIR.
 //
-//   remeshing_benchmark OUT.json [--relative R] [MESH ...]
+//   remeshing_benchmark OUT.json [--relative R] [--save-meshes DIR] [MESH ...]
+//
+// Exit code: 0, 1 when a model is refused, 2 for bad arguments or input, or an output that cannot
+// be written.
 
 #include <CGAL/Conformal_remeshing/IO/read_mesh.h>
 #include <CGAL/Conformal_remeshing/mesh_quality.h>
 #include <CGAL/remesh_conformal.h>
 
+#include "atomic_file.h"
 #include "cad_like_models.h"
 #include "test_surfaces.h"
 #include "generated_patches.h"
 #include "isotropic_peer.h"
 #include "json_writer.h"
+#include "model_tool.h"
 #include "timing.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
+#include <cctype>
+#include <cerrno>
 #include <chrono>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <iomanip>
 #include <iostream>
+#include <set>
+#include <sstream>
+#include <stdexcept>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CR = CGAL::Conformal_remeshing;
 namespace bm = CGAL::Conformal_remeshing::benchmarks;
+namespace tools = Conformal_remeshing_tools;
 typedef CGAL::Epick K;
 typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 
@@ -78,43 +94,193 @@ void write_json(std::ostream& out, const Measure& m)
       << ", \"hausdorff_from_input\": " << m.hausdorff_from << ", \"self_intersects\": " << (m.self_intersects ? "true" : "false") << "}";
 }
 
+std::string usage()
+{
+  return "usage: remeshing_benchmark OUT.json [--relative R] [--save-meshes DIR] [MESH ...]\n"
+         "  --relative R        target edge length over the bounding-box diagonal, 0 < R < 1 (default 0.01)\n"
+         "  --save-meshes DIR   write DIR/<model>_conformal.off and DIR/<model>_isotropic.off for each model,\n"
+         "                      and DIR/<model>_input.off for the generated ones; DIR is created if missing";
+}
+
+// Fails before minutes of runs, not after them, when `path` cannot be written.
+void check_writable(const std::string& path)
+{
+  if(std::filesystem::is_directory(path))
+    throw std::runtime_error("cannot write '" + path + "': it is a directory");
+  const std::string probe = path + ".probe";
+  std::ofstream out(probe);
+  if(!out)
+    throw std::runtime_error("cannot write '" + path + "': " + std::strerror(errno));
+  out.close();
+  std::remove(probe.c_str());
+}
+
+// Reads a mesh file; throws std::runtime_error with the reason when it cannot be used.
+Mesh read_model(const std::string& path)
+{
+  Mesh mesh;
+  try
+  {
+    const CR::Mesh_check_report check = CR::read_and_check_mesh(path, mesh);
+    if(!check.is_valid())
+      throw std::runtime_error("invalid mesh '" + path + "': " + check.summary());
+  }
+  catch(const CR::Error& e)
+  {
+    throw std::runtime_error(e.what());
+  }
+  return mesh;
+}
+
+// A model's name as the start of a file name: lowercase, each run of spaces and commas (and of any
+// other character but letters, digits, '-' and '.') one '_'; a mesh file's extension is dropped
+// ("spherical cap, fine" -> "spherical_cap_fine", "nefertiti.off" -> "nefertiti").
+std::string file_safe_name(std::string name, bool is_file)
+{
+  if(is_file)
+  {
+    const std::string::size_type dot = name.find_last_of('.');
+    if(dot != std::string::npos && dot > 0)
+      name.erase(dot);
+  }
+  std::string safe;
+  for(unsigned char c : name)
+  {
+    if(std::isalnum(c) || c == '-' || c == '.')
+      safe += char(std::tolower(c));
+    else if(safe.empty() || safe.back() != '_')
+      safe += '_';
+  }
+  return safe.empty() ? std::string("model") : safe;
+}
+
+// `s` as a JSON string, quotes included (model names come from file names).
+std::string json_string(const std::string& s)
+{
+  tools::Json_writer w;
+  w.value(s);
+  std::string text = w.str();
+  text.pop_back(); // its final newline
+  return text;
+}
+
+struct Model
+{
+  std::string name;      // as printed and recorded in the JSON
+  std::string file_stem; // DIR/<file_stem>_conformal.off, ... with --save-meshes
+  bool generated = false;
+  Mesh mesh;
+};
+
 } // namespace
 
 int main(int argc, char** argv)
 {
   if(argc < 2)
   {
-    std::cerr << "usage: remeshing_benchmark OUT.json [--relative R] [MESH ...]\n";
+    std::cerr << usage() << "\n";
     return 2;
   }
-  double relative = 0.01;
-  std::vector<std::pair<std::string, Mesh> > models = bm::generated_patches<Mesh>(true);
-  for(int i = 2; i < argc; ++i)
+  if(std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h")
   {
-    const std::string arg = argv[i];
-    if(arg == "--relative" && i + 1 < argc)
+    std::cout << usage() << "\n";
+    return 0;
+  }
+  const std::string out_path = argv[1];
+  double relative = 0.01;
+  std::string mesh_directory; // empty: no --save-meshes
+  std::vector<Model> models;
+  try
+  {
+    if(out_path.empty() || out_path[0] == '-')
+      throw std::invalid_argument("the first argument must be the output file OUT.json, not '" + out_path + "'");
+    // Every file is read before the first run, so that a bad one fails at once.
+    std::vector<Model> files;
+    for(int i = 2; i < argc; ++i)
     {
-      relative = std::stod(argv[++i]);
-      continue;
+      const std::string arg = argv[i];
+      if(arg == "--relative")
+      {
+        if(i + 1 >= argc)
+          throw std::invalid_argument("--relative: missing value");
+        relative = bm::parse_double(arg, argv[++i]);
+        if(!(relative > 0. && relative < 1.))
+          throw std::invalid_argument("--relative: must be greater than 0 and less than 1: '" + std::string(argv[i]) + "'");
+        continue;
+      }
+      if(arg == "--save-meshes")
+      {
+        if(i + 1 >= argc || argv[i + 1][0] == '\0')
+          throw std::invalid_argument("--save-meshes: missing directory");
+        mesh_directory = argv[++i];
+        continue;
+      }
+      if(!arg.empty() && arg[0] == '-')
+        throw std::invalid_argument("unknown option '" + arg + "'");
+      Model m;
+      m.name = arg.substr(arg.find_last_of('/') + 1);
+      m.mesh = read_model(arg);
+      files.push_back(std::move(m));
     }
-    Mesh mesh;
+    check_writable(out_path);
+    for(std::pair<std::string, Mesh>& g : bm::generated_patches<Mesh>(true))
+    {
+      Model m;
+      m.name = g.first;
+      m.generated = true;
+      m.mesh = std::move(g.second);
+      models.push_back(std::move(m));
+    }
+    for(Model& m : files)
+      models.push_back(std::move(m));
+    if(!mesh_directory.empty())
+    {
+      // Distinct file names, even for two files of the same name in different directories.
+      std::set<std::string> taken;
+      for(Model& m : models)
+      {
+        const std::string stem = file_safe_name(m.name, !m.generated);
+        m.file_stem = stem;
+        for(int n = 2; !taken.insert(m.file_stem).second; ++n)
+          m.file_stem = stem + "_" + std::to_string(n);
+      }
+      tools::prepare_output_directory(mesh_directory);
+      for(const Model& m : models)
+        for(const char* kind : {"_conformal.off", "_isotropic.off", "_input.off"})
+          if(m.generated || std::string(kind) != "_input.off")
+            check_writable(mesh_directory + "/" + m.file_stem + kind);
+    }
+  }
+  catch(const std::invalid_argument& e)
+  {
+    std::cerr << "remeshing_benchmark: " << e.what() << "\n" << usage() << "\n";
+    return 2;
+  }
+  catch(const std::exception& e)
+  {
+    std::cerr << "remeshing_benchmark: " << e.what() << "\n";
+    return 2;
+  }
+
+  // Writes one mesh of --save-meshes; a failure is reported, the run goes on (its measures are
+  // still worth their JSON) and the exit code is 2.
+  std::size_t unsaved = 0;
+  const auto save = [&](const Mesh& mesh, const Model& m, const char* kind) {
+    if(mesh_directory.empty())
+      return;
+    const std::string path = mesh_directory + "/" + m.file_stem + kind;
     try
     {
-      if(!CR::read_and_check_mesh(arg, mesh).is_valid())
-      {
-        std::cerr << "remeshing_benchmark: invalid mesh " << arg << "\n";
-        return 1;
-      }
+      bm::write_off_atomically(mesh, path);
     }
     catch(const std::exception& e)
     {
+      ++unsaved;
       std::cerr << "remeshing_benchmark: " << e.what() << "\n";
-      return 2;
     }
-    models.emplace_back(arg.substr(arg.find_last_of('/') + 1), mesh);
-  }
+  };
 
-  std::ofstream json(argv[1]);
+  std::ostringstream json;
   json << "[\n";
   std::cout << std::left << std::setw(22) << "model" << std::setw(12) << "method" << std::right << std::setw(8) << "sec"
             << std::setw(8) << "verts" << std::setw(8) << "minang" << std::setw(8) << "%<25" << std::setw(8) << "skew"
@@ -122,7 +288,10 @@ int main(int argc, char** argv)
   std::size_t failures = 0;
   for(std::size_t k = 0; k < models.size(); ++k)
   {
-    const Mesh& input = models[k].second;
+    const Model& model = models[k];
+    const Mesh& input = model.mesh;
+    if(model.generated) // a generated input exists nowhere else
+      save(input, model, "_input.off");
     Mesh ours;
     CR::Remeshing_report report;
     double ours_seconds = 0.;
@@ -136,28 +305,37 @@ int main(int argc, char** argv)
     {
       // A model the remesher refuses is a result too: recorded, and the run goes on.
       ++failures;
-      std::cout << std::left << std::setw(22) << models[k].first << std::setw(12) << "conformal" << "FAILED: " << e.what() << "\n";
+      std::cout << std::left << std::setw(22) << model.name << std::setw(12) << "conformal" << "FAILED: " << e.what() << "\n";
       Conformal_remeshing_tools::Json_writer record; // escapes the message
-      record.begin_object().field("model", models[k].first).field("failed", std::string(e.what())).end_object();
+      record.begin_object().field("model", model.name).field("failed", std::string(e.what())).end_object();
       std::string text = record.str();
       text.pop_back(); // its final newline
       json << (k ? ",\n" : "") << "  " << text;
+      if(!mesh_directory.empty())
+      {
+        // No outputs for this model: an earlier run's must not pass for this one's.
+        std::error_code ignored;
+        std::filesystem::remove(mesh_directory + "/" + model.file_stem + "_conformal.off", ignored);
+        std::filesystem::remove(mesh_directory + "/" + model.file_stem + "_isotropic.off", ignored);
+      }
       continue;
     }
+    save(ours, model, "_conformal.off");
     const double h = report.target_edge_length;
     Mesh peer;
     const double peer_seconds = bm::median_seconds([&] {
       peer = input;
       bm::run_isotropic_peer(peer, h);
     });
+    save(peer, model, "_isotropic.off");
     const Measure a = measure(input, ours, h, ours_seconds), b = measure(input, peer, h, peer_seconds);
-    print_row(models[k].first, "conformal", a);
+    print_row(model.name, "conformal", a);
     print_row("", "isotropic", b);
     std::cout << std::left << std::setw(22) << "" << std::setw(12) << "ratio" << std::right << std::setw(8)
               << std::setprecision(3) << a.seconds / b.seconds << std::setw(8) << "" << std::setw(8) << a.min_angle / b.min_angle
               << std::setw(8) << "" << std::setw(8) << a.skewness / b.skewness << std::setw(8) << "" << std::setw(10)
               << a.hausdorff_to / b.hausdorff_to << std::setw(10) << a.hausdorff_from / b.hausdorff_from << "\n";
-    json << (k ? ",\n" : "") << "  {\"model\": \"" << models[k].first << "\", \"target_edge_length\": " << h
+    json << (k ? ",\n" : "") << "  {\"model\": " << json_string(model.name) << ", \"target_edge_length\": " << h
          << ", \"patches\": " << report.number_of_patches << ", \"stage_seconds\": {\"segmentation\": "
          << report.seconds_segmentation << ", \"flattening\": " << report.seconds_flattening
          << ", \"meshing_and_pull_back\": " << report.seconds_meshing_stage << ", \"gluing\": " << report.seconds_gluing
@@ -172,5 +350,21 @@ int main(int argc, char** argv)
   json << "\n]\n";
   std::cout << "(sec: median of 3 runs; %edges: edges within [0.7, 1.4] x target; H: Hausdorff distance to and from "
                "the input over its diagonal; ratio: conformal / isotropic)\n";
+  if(!mesh_directory.empty())
+    std::cout << "meshes: " << mesh_directory << "\n";
+  try
+  {
+    tools::write_file_atomically(out_path, json.str());
+  }
+  catch(const std::exception& e)
+  {
+    std::cerr << "remeshing_benchmark: " << e.what() << "\n";
+    return 2;
+  }
+  if(unsaved > 0)
+  {
+    std::cerr << "remeshing_benchmark: " << unsaved << " mesh(es) could not be saved in '" << mesh_directory << "'\n";
+    return 2;
+  }
   return failures == 0 ? 0 : 1;
 }
