@@ -218,7 +218,9 @@ TEST(RemeshConformal, PlanarStageWithExactConstructions)
       smallest = (std::min)({smallest, tq.angles[0], tq.angles[1], tq.angles[2]});
     }
     EXPECT_NEAR(area, 4. - 0.36, 1e-12); // the square minus the hole, exactly covered
-    EXPECT_GE(smallest, 20.);
+    // The bound asked for, not CGAL's default of 20.7 degrees (which the criteria fell back to
+    // when their virtual base was left to its default constructor).
+    EXPECT_GE(smallest, 25.);
   }
 }
 

@@ -135,8 +135,12 @@ class Size_field_criteria_2 : public CGAL::Delaunay_mesh_size_criteria_2<CDT>
 public:
   typedef typename Base::Quality Quality;
 
+  // `Delaunay_mesh_criteria_2`, which holds the shape bound, is a virtual base of `Base`: only the
+  // most derived class constructs it, and `Base`'s initializer of it is skipped. Without it here,
+  // the bound was CGAL's default 0.125 (20.7 degrees) whatever the caller asked for.
   Size_field_criteria_2(double shape_bound, const Size_field& size)
-    : Base(shape_bound, 0.), size_(size), corner_sizes_(std::make_shared<Corner_sizes>())
+    : CGAL::Delaunay_mesh_criteria_2<CDT>(shape_bound), Base(shape_bound, 0.), size_(size),
+      corner_sizes_(std::make_shared<Corner_sizes>())
   {}
 
   class Is_bad : public Base::Is_bad
