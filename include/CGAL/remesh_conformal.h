@@ -531,7 +531,7 @@ inline std::string describe_glue_defect(const std::vector<std::array<std::size_t
 ///     \cgalParamDefault{28}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{corner_angle}
-///     \cgalParamDescription{boundary and feature vertices turning by more than this (degrees) are kept}
+///     \cgalParamDescription{boundary and feature vertices turning by more than this (degrees) are kept; so are those of the cuts between patches, except where the cut runs less than 0.3 target lengths to the next curve end}
 ///     \cgalParamDefault{30}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{smoothing_iterations}

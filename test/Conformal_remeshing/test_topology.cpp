@@ -339,15 +339,16 @@ TEST(RemeshAnyTopology, UserPatches)
 
 // CGAL's elephant (genus 3, a coarse smooth scan): the bisections cut it every few target lengths,
 // and the thinnest triangles leaned on those cuts until the flips after gluing (smallest angle
-// 4.9 degrees before them, 17.8 after, 16.9 since the kept tips changed that patch's mesh).
-// Issue #6 asks 20 degrees and a mean skewness of 0.12: not met yet (one triangle at 16.9 beside
-// a short boundary chord at a junction of cuts, skewness 0.125); held here to what is measured.
+// 4.9 degrees before them, 17.8 after, 16.9 since the kept tips changed that patch's mesh, 20.7
+// since pieces of cut shorter than 0.3 target lengths do not end at a turn: the worst triangle
+// had two samples 0.18 target lengths apart). Issue #6's 20 degrees are held; its mean skewness of
+// 0.12 is not met yet (0.1245), held here to what is measured.
 TEST(RemeshAnyTopology, CgalElephantGenusThree)
 {
   Mesh elephant;
   ASSERT_TRUE(CR::read_and_check_mesh(std::string(CONFORMAL_REMESHING_CGAL_DATA) + "/meshes/elephant.off", elephant).is_valid());
   ASSERT_EQ(CR::check_mesh(elephant).total_genus(), 3);
-  const CR::Remeshing_report report = check_remeshing(elephant, remeshing_checks::Quality_bars(16.5).mean_skewness_at_most(0.126));
+  const CR::Remeshing_report report = check_remeshing(elephant, remeshing_checks::Quality_bars(20.).mean_skewness_at_most(0.126));
   EXPECT_GT(report.flips_after_gluing, 0u);
 }
 
@@ -356,7 +357,8 @@ TEST(RemeshAnyTopology, CgalElephantGenusThree)
 // (30) raised its smallest angle at 1% from 16.9 to 21 or 24.6 degrees, but made the output
 // intersect itself at this target (and at 0.0125 and 0.011): a chord that skips a zigzag corner
 // leaves a sliver of one patch's surface outside its planar domain, and the other patch's
-// triangles beyond its own flat domain are clamped onto the cut. Kept as a guard.
+// triangles beyond its own flat domain are clamped onto the cut. Kept as a guard (the rule on
+// pieces of cut shorter than 0.3 target lengths skips only corners that near, and passes it).
 TEST(RemeshAnyTopology, CgalElephantAtASmallerTarget)
 {
   Mesh elephant, output;

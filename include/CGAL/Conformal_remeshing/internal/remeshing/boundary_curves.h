@@ -51,11 +51,20 @@ struct Curve_samples
 /// Splits the patch boundaries of `s` (edges between two patches, borders, and sharp features
 /// inside a patch, along which the patch is slit open) into curves
 /// between junctions (vertices where other than two boundary edges meet, where the pair of
-/// patches changes, or where the curve turns by more than `corner_degrees`), and samples each
+/// patches changes, or where the curve turns by more than `corner_degrees`, except on a cut
+/// beside a piece of cut shorter than `shortest_cut_piece` times the target), and samples each
 /// curve at spacing close to `sizing` (interpolated between the curve's vertices), divided by
 /// 2^`halvings[c]` on curve `c` when given (the curves are numbered in the same order by every
 /// call on the same segmentation). A curve that closes on itself gets at least 3 pieces, and a
 /// slit or two curves with the same ends at least 2 each, so every patch loop has 3 samples or more.
+/// Pieces of cut (patch borders that are not features, borders or user borders) shorter than
+/// this times the target length do not end at a turn (see `sample_boundary_curves()`). (The
+/// elephant from 0.009 to 0.016 of its diagonal, against no such rule: the smallest angle is the
+/// same or larger, 16.9 -> 20.7 degrees at 1%, and the distances to the input the same or smaller;
+/// CGAL's other models are unchanged. At 0.5 the angles rose more, to 24.3 degrees at 1%, but the
+/// distance from the input grew to 1.15 times isotropic_remeshing's.)
+constexpr double shortest_cut_piece = 0.3;
+
 inline Curve_samples sample_boundary_curves(const Poly_annulus_segmentation& s, const Sizing& sizing, double corner_degrees,
                                             const std::vector<int>& halvings = std::vector<int>())
 {
@@ -69,6 +78,8 @@ inline Curve_samples sample_boundary_curves(const Poly_annulus_segmentation& s, 
   auto sides = [&](Halfedge h) -> std::pair<std::size_t, std::size_t> {
     return std::minmax(patch_of(h), patch_of(m.opposite(h)));
   };
+  // the output keeps these edges' curves as chains of its edges; the other curve edges are cuts
+  auto is_kept_edge = [&](Mesh::Edge_index e) { return s.is_feature[e] || s.is_user_border[e] || m.is_border(e); };
 
   std::vector<std::vector<Halfedge> > outgoing(m.number_of_vertices());
   for(auto e : m.edges())
@@ -90,6 +101,39 @@ inline Curve_samples sample_boundary_curves(const Poly_annulus_segmentation& s, 
     const double c = (in * next) / std::sqrt(in.squared_length() * next.squared_length());
     junction[v] = std::acos((std::max)(-1., (std::min)(1., c))) * 180. / CGAL_PI > corner_degrees;
   }
+
+  // A cut between patches follows input edges, and on a scan it zigzags: a turn above the corner
+  // angle between two pieces of cut, one of them shorter than `shortest_cut_piece` times the
+  // target, is no curve end. Its samples, a short chord apart, left a sliver between them and the
+  // next output vertex (the elephant at 1%: 16.9 degrees, 20.7 so). Features, borders and user
+  // borders keep their corners.
+  std::vector<Vertex> smoothed_turns;
+  for(Vertex v : m.vertices())
+  {
+    const std::vector<Halfedge>& out = outgoing[v];
+    if(!junction[v] || out.size() != 2 || sides(out[0]) != sides(out[1]) || is_kept_edge(m.edge(out[0]))
+       || is_kept_edge(m.edge(out[1])))
+      continue;
+    for(Halfedge h : out)
+    {
+      double length = 0.; // along the cut to the next curve end
+      for(Halfedge g = h;;)
+      {
+        length += std::sqrt(CGAL::squared_distance(m.point(m.source(g)), m.point(m.target(g))));
+        const Vertex w = m.target(g);
+        if(junction[w] || w == v || length >= shortest_cut_piece * sizing.target())
+          break;
+        g = (m.edge(outgoing[w][0]) == m.edge(g)) ? outgoing[w][1] : outgoing[w][0];
+      }
+      if(length < shortest_cut_piece * sizing.target())
+      {
+        smoothed_turns.push_back(v);
+        break;
+      }
+    }
+  }
+  for(Vertex v : smoothed_turns)
+    junction[v] = 0;
 
   // Curves as vertex polylines: first from every junction, then the closed curves left.
   std::vector<std::vector<Vertex> > curves;
@@ -129,8 +173,7 @@ inline Curve_samples sample_boundary_curves(const Poly_annulus_segmentation& s, 
     bool kept = false;
     for(std::size_t i = 0; i + 1 < curve.size() && !kept; ++i)
     {
-      const auto e = m.edge(m.halfedge(curve[i], curve[i + 1]));
-      kept = s.is_feature[e] || s.is_user_border[e] || m.is_border(e);
+      kept = is_kept_edge(m.edge(m.halfedge(curve[i], curve[i + 1])));
     }
     samples.is_kept_curve.push_back(kept);
   }
