@@ -13,6 +13,7 @@
 #include <CGAL/remesh_conformal.h>
 
 #include "atomic_file.h"
+#include "benchmark_io.h"
 #include "cad_like_models.h"
 #include "json_writer.h"
 #include "model_tool.h"
@@ -146,37 +147,7 @@ int parallel_threads()
 #endif
 }
 
-// Fails before minutes of runs, not after them, when OUT.json cannot be written.
-void check_writable(const std::string& path)
-{
-  if(std::filesystem::is_directory(path))
-    throw std::runtime_error("cannot write '" + path + "': it is a directory");
-  const std::string probe = path + ".probe";
-  std::ofstream out(probe);
-  if(!out)
-    throw std::runtime_error("cannot write '" + path + "': " + std::strerror(errno));
-  out.close();
-  std::remove(probe.c_str());
-}
-
 std::string usage() { return "usage: concurrency_benchmark OUT.json [--runs N] [MESH ...]"; }
-
-// Reads a mesh file; throws std::runtime_error with the reason when it cannot be used.
-Mesh read_model(const std::string& path)
-{
-  Mesh mesh;
-  try
-  {
-    const CR::Mesh_check_report check = CR::read_and_check_mesh(path, mesh);
-    if(!check.is_valid())
-      throw std::runtime_error("invalid mesh '" + path + "': " + check.summary());
-  }
-  catch(const CR::Error& e)
-  {
-    throw std::runtime_error(e.what());
-  }
-  return mesh;
-}
 
 void print_rows(const Result& r)
 {
@@ -279,11 +250,11 @@ int main(int argc, char** argv)
       }
       if(!arg.empty() && arg[0] == '-')
         throw std::invalid_argument("unknown option '" + arg + "'");
-      inputs.push_back(read_model(arg));
+      inputs.push_back(bm::read_model<Mesh>(arg));
       results.emplace_back();
       results.back().model = arg.substr(arg.find_last_of('/') + 1);
     }
-    check_writable(out_path);
+    bm::check_writable(out_path);
   }
   catch(const std::invalid_argument& e)
   {

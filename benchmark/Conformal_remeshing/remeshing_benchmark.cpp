@@ -16,6 +16,7 @@
 #include <CGAL/remesh_conformal.h>
 
 #include "atomic_file.h"
+#include "benchmark_io.h"
 #include "cad_like_models.h"
 #include "test_surfaces.h"
 #include "generated_patches.h"
@@ -100,36 +101,6 @@ std::string usage()
          "  --relative R        target edge length over the bounding-box diagonal, 0 < R < 1 (default 0.01)\n"
          "  --save-meshes DIR   write DIR/<model>_conformal.off and DIR/<model>_isotropic.off for each model,\n"
          "                      and DIR/<model>_input.off for the generated ones; DIR is created if missing";
-}
-
-// Fails before minutes of runs, not after them, when `path` cannot be written.
-void check_writable(const std::string& path)
-{
-  if(std::filesystem::is_directory(path))
-    throw std::runtime_error("cannot write '" + path + "': it is a directory");
-  const std::string probe = path + ".probe";
-  std::ofstream out(probe);
-  if(!out)
-    throw std::runtime_error("cannot write '" + path + "': " + std::strerror(errno));
-  out.close();
-  std::remove(probe.c_str());
-}
-
-// Reads a mesh file; throws std::runtime_error with the reason when it cannot be used.
-Mesh read_model(const std::string& path)
-{
-  Mesh mesh;
-  try
-  {
-    const CR::Mesh_check_report check = CR::read_and_check_mesh(path, mesh);
-    if(!check.is_valid())
-      throw std::runtime_error("invalid mesh '" + path + "': " + check.summary());
-  }
-  catch(const CR::Error& e)
-  {
-    throw std::runtime_error(e.what());
-  }
-  return mesh;
 }
 
 // A model's name as the start of a file name: lowercase, each run of spaces and commas (and of any
@@ -219,10 +190,10 @@ int main(int argc, char** argv)
         throw std::invalid_argument("unknown option '" + arg + "'");
       Model m;
       m.name = arg.substr(arg.find_last_of('/') + 1);
-      m.mesh = read_model(arg);
+      m.mesh = bm::read_model<Mesh>(arg);
       files.push_back(std::move(m));
     }
-    check_writable(out_path);
+    bm::check_writable(out_path);
     for(std::pair<std::string, Mesh>& g : bm::generated_patches<Mesh>(true))
     {
       Model m;
@@ -248,7 +219,7 @@ int main(int argc, char** argv)
       for(const Model& m : models)
         for(const char* kind : {"_conformal.off", "_isotropic.off", "_input.off"})
           if(m.generated || std::string(kind) != "_input.off")
-            check_writable(mesh_directory + "/" + m.file_stem + kind);
+            bm::check_writable(mesh_directory + "/" + m.file_stem + kind);
     }
   }
   catch(const std::invalid_argument& e)
