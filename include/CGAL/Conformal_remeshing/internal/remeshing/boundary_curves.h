@@ -48,6 +48,14 @@ struct Curve_samples
   }
 };
 
+/// Pieces of cut (patch borders that are not features, borders or user borders) shorter than
+/// this times the target length do not end at a turn (see `sample_boundary_curves()`). (The
+/// elephant from 0.009 to 0.016 of its diagonal, against no such rule: the smallest angle is the
+/// same or larger, 16.9 -> 20.7 degrees at 1%, and the distances to the input the same or smaller;
+/// CGAL's other models are unchanged. At 0.5 the angles rose more, to 24.3 degrees at 1%, but the
+/// distance from the input grew to 1.15 times isotropic_remeshing's.)
+constexpr double shortest_cut_piece = 0.3;
+
 /// Splits the patch boundaries of `s` (edges between two patches, borders, and sharp features
 /// inside a patch, along which the patch is slit open) into curves
 /// between junctions (vertices where other than two boundary edges meet, where the pair of
@@ -57,14 +65,6 @@ struct Curve_samples
 /// 2^`halvings[c]` on curve `c` when given (the curves are numbered in the same order by every
 /// call on the same segmentation). A curve that closes on itself gets at least 3 pieces, and a
 /// slit or two curves with the same ends at least 2 each, so every patch loop has 3 samples or more.
-/// Pieces of cut (patch borders that are not features, borders or user borders) shorter than
-/// this times the target length do not end at a turn (see `sample_boundary_curves()`). (The
-/// elephant from 0.009 to 0.016 of its diagonal, against no such rule: the smallest angle is the
-/// same or larger, 16.9 -> 20.7 degrees at 1%, and the distances to the input the same or smaller;
-/// CGAL's other models are unchanged. At 0.5 the angles rose more, to 24.3 degrees at 1%, but the
-/// distance from the input grew to 1.15 times isotropic_remeshing's.)
-constexpr double shortest_cut_piece = 0.3;
-
 inline Curve_samples sample_boundary_curves(const Poly_annulus_segmentation& s, const Sizing& sizing, double corner_degrees,
                                             const std::vector<int>& halvings = std::vector<int>())
 {
@@ -107,6 +107,7 @@ inline Curve_samples sample_boundary_curves(const Poly_annulus_segmentation& s, 
   // target, is no curve end. Its samples, a short chord apart, left a sliver between them and the
   // next output vertex (the elephant at 1%: 16.9 degrees, 20.7 so). Features, borders and user
   // borders keep their corners.
+  const double short_piece = shortest_cut_piece * sizing.target();
   std::vector<Vertex> smoothed_turns;
   for(Vertex v : m.vertices())
   {
@@ -121,11 +122,11 @@ inline Curve_samples sample_boundary_curves(const Poly_annulus_segmentation& s, 
       {
         length += std::sqrt(CGAL::squared_distance(m.point(m.source(g)), m.point(m.target(g))));
         const Vertex w = m.target(g);
-        if(junction[w] || w == v || length >= shortest_cut_piece * sizing.target())
+        if(junction[w] || w == v || length >= short_piece)
           break;
         g = (m.edge(outgoing[w][0]) == m.edge(g)) ? outgoing[w][1] : outgoing[w][0];
       }
-      if(length < shortest_cut_piece * sizing.target())
+      if(length < short_piece)
       {
         smoothed_turns.push_back(v);
         break;
