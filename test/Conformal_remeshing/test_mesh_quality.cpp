@@ -22,6 +22,7 @@ namespace CR = CGAL::Conformal_remeshing;
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
 typedef K::Point_3 Point;
 typedef CGAL::Surface_mesh<Point> Mesh;
+typedef CGAL::Simple_cartesian<double>::Point_3 Fast_point;
 
 namespace {
 
@@ -218,6 +219,33 @@ TEST(ReferenceComparison, SamplesComeFromTheSeedAlone)
   EXPECT_GT(first.relative_distance_from_reference, 0.5 / first.reference_diagonal); // near the bumps' height of 1
 }
 
+TEST(ReferenceComparison, FarthestPointInsideATriangleIsFound)
+{
+  // A triangle over a square tent 0.3 deep with its corners at the square's corners: the
+  // distance from the triangle to the tent is 0 at its three corners (on the tent's rim) and
+  // largest, 0.15 / sqrt(0.34), at the square's centre, inside the triangle, where the four
+  // faces of the tent are equally far. Ten random points on the triangle come nowhere near that
+  // point alone; the search from the farthest of them finds it.
+  Mesh tent;
+  const auto apex = tent.add_vertex(Point(0.5, 0.5, -0.3));
+  const std::array<Mesh::Vertex_index, 4> corner{{tent.add_vertex(Point(0, 0, 0)), tent.add_vertex(Point(1, 0, 0)),
+                                                  tent.add_vertex(Point(1, 1, 0)), tent.add_vertex(Point(0, 1, 0))}};
+  for(int i = 0; i < 4; ++i)
+    tent.add_face(corner[i], corner[(i + 1) % 4], apex);
+  const Mesh triangle = single_triangle(Point(0, 0, 0), Point(1, 0, 0), Point(0.5, 1, 0));
+  const double farthest = 0.15 / std::sqrt(0.34), diagonal = std::sqrt(2.09);
+  for(unsigned int seed : {0u, 1u, 2u})
+  {
+    const CR::Reference_comparison c =
+      CR::compare_to_reference(triangle, tent, CGAL::parameters::number_of_points_on_faces(10).random_seed(seed));
+    EXPECT_NEAR(c.reference_diagonal, diagonal, 1e-12);
+    EXPECT_GT(c.relative_distance_to_reference, (1. - 1e-3) * farthest / diagonal) << "seed " << seed;
+    EXPECT_LE(c.relative_distance_to_reference, (1. + 1e-12) * farthest / diagonal) << "seed " << seed;
+    EXPECT_NEAR(c.farthest_point_to_reference[0], 0.5, 1e-3);
+    EXPECT_NEAR(c.farthest_point_to_reference[1], 0.5, 1e-3);
+  }
+}
+
 TEST(ReferenceComparison, SamplesLieOnTheMesh)
 {
   // Vertices, as many points on the edges, then the points on the faces; all on the flat grid.
@@ -234,6 +262,22 @@ TEST(ReferenceComparison, SamplesLieOnTheMesh)
   // Points spread by area: a quarter of the grid gets about a quarter of them.
   EXPECT_GT(inside_the_lower_left_quarter, points.size() / 6);
   EXPECT_LT(inside_the_lower_left_quarter, points.size() / 3);
+
+  // The same points with where each face sample is: the last 1000, at (u, w) in their triangle.
+  std::vector<std::array<Fast_point, 3> > triangles;
+  std::vector<CR::internal::Face_sample> where;
+  const auto again = CR::internal::sample_points(m, 1000, 3, &triangles, &where);
+  ASSERT_EQ(again, points);
+  ASSERT_EQ(triangles.size(), m.number_of_faces());
+  ASSERT_EQ(where.size(), 1000u);
+  for(std::size_t i = 0; i < where.size(); ++i)
+  {
+    const auto& t = triangles.at(where[i].triangle);
+    const Fast_point& p = points[points.size() - where.size() + i];
+    EXPECT_TRUE(where[i].u >= 0. && where[i].w >= 0. && where[i].u + where[i].w <= 1.);
+    EXPECT_NEAR(p.x(), t[0].x() + where[i].u * (t[1].x() - t[0].x()) + where[i].w * (t[2].x() - t[0].x()), 1e-12);
+    EXPECT_NEAR(p.y(), t[0].y() + where[i].u * (t[1].y() - t[0].y()) + where[i].w * (t[2].y() - t[0].y()), 1e-12);
+  }
 }
 
 TEST(ReferenceComparison, CoverOfACadPlateIsItsSurfaceWithoutTheFans)
