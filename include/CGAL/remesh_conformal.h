@@ -15,6 +15,7 @@
 #include <CGAL/Conformal_remeshing/internal/time_limit.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/boundary_curves.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/flips_after_gluing.h>
+#include <CGAL/Conformal_remeshing/internal/remeshing/moves_after_gluing.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/kept_input_vertices.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/planar_locator.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/planar_mesher.h>
@@ -91,10 +92,13 @@ struct Remeshing_report
   /// chord and the boundary polyline) and were clamped onto the nearest patch triangle
   std::size_t clamped_vertices = 0;
   std::size_t optimization_flips = 0; ///< edge flips of the optimization on the surface
-  /// edge flips on the glued mesh: between boundary samples for shape, then of triangles below
-  /// 30 degrees; mostly across the cuts between patches (undone, all of them, if they made the
-  /// output intersect itself)
+  /// edge flips on the glued mesh: between boundary samples and at moved points for shape, then
+  /// of triangles below 30 degrees; mostly across the cuts between patches (undone, all of them
+  /// and the moves, if they made the output intersect itself)
   std::size_t flips_after_gluing = 0;
+  /// vertex moves on the glued mesh: samples of the cuts between patches and their neighbours,
+  /// moved on the input surface for shape (undone with the flips)
+  std::size_t moves_after_gluing = 0;
   /// wall-clock seconds of the stages (the flattening and meshing stages run patches in parallel)
   double seconds_segmentation = 0., seconds_flattening = 0., seconds_meshing_stage = 0., seconds_gluing = 0.;
   /// seconds summed over the patches (thread time)
@@ -503,7 +507,9 @@ inline std::string describe_glue_defect(const std::vector<std::array<std::size_t
 /// adding points on the shared boundaries; every new planar vertex is carried back onto the input
 /// surface through the flow's bijective correspondence (no projection). The patches are glued at
 /// their shared samples: the output is closed and manifold where the input is, with the input's
-/// components, boundary loops and genus. A patch whose flattening fails, or whose local scale
+/// components, boundary loops and genus. On the glued output, edges across the cuts between
+/// patches are flipped and the cuts' samples and their neighbours moved on the input surface (a
+/// closest-point search around their face) where that improves the shapes. A patch whose flattening fails, or whose local scale
 /// varies by more than `maximum_scale_ratio`, is bisected and flattened again.
 ///
 /// \tparam ConcurrencyTag `CGAL::Parallel_if_available_tag` (the default: patches are flattened and
@@ -799,17 +805,37 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
     throw Error(Error_code::NOT_AN_EMBEDDING, "remesh_conformal: the remeshed patches do not glue into a manifold: "
                                                 + internal::remeshing::describe_glue_defect(triangles, patch_of_triangle, points)
                                                 + " (internal error)");
-  // The patches kept their boundary chords; now a cut's chords can be flipped too: for shape
-  // (edges between two samples), then for triangles below 30 degrees. The flips are undone below
-  // if the output intersects itself with them and not without.
+  // The patches kept their boundary chords and samples; now a cut's chords can be flipped too
+  // (for shape: edges between two samples), its samples and their neighbours moved on the surface
+  // (moves_after_gluing.h), the edges at moved points flipped for shape again, then the triangles
+  // below 30 degrees flipped. Should the output intersect itself with all that and not without,
+  // the flips are made again without the moves, and then none of them (below).
   auto is_sample = [&](std::size_t i) { return i < samples.points.size(); };
-  internal::remeshing::Glued_soup_flipper flipper(
-    points, triangles, [&](std::size_t a, std::size_t b) { return is_sample(a) && is_sample(b) && samples.is_kept_chord(a, b); },
-    (std::max)(30., min_angle));
-  flipper.shape_passes([&](std::size_t a, std::size_t b) { return is_sample(a) && is_sample(b); }, 3);
-  flipper.angle_passes();
-  const internal::remeshing::Soup_flips& flips = flipper.result();
-  report.flips_after_gluing = flips.flips;
+  const std::vector<std::array<std::size_t, 3> > unflipped = triangles;
+  const std::vector<Epick::Point_3> unmoved_points = points;
+  const std::vector<Face> unmoved_faces = point_face;
+  auto improve_after_gluing = [&](bool with_moves) {
+    triangles = unflipped;
+    points = unmoved_points;
+    point_face = unmoved_faces;
+    internal::remeshing::Glued_soup_flipper flipper(
+      points, triangles, [&](std::size_t a, std::size_t b) { return is_sample(a) && is_sample(b) && samples.is_kept_chord(a, b); },
+      (std::max)(30., min_angle));
+    flipper.shape_passes([&](std::size_t a, std::size_t b) { return is_sample(a) && is_sample(b); }, 3);
+    report.moves_after_gluing = 0;
+    if(with_moves)
+    {
+      const std::vector<char> movable = internal::remeshing::points_around_cuts(samples, triangles, points.size());
+      report.moves_after_gluing = internal::remeshing::move_samples_after_gluing(
+        segmentation, points, point_face, triangles, movable, (std::max)(30., min_angle),
+        internal::remeshing::longest_edge_factor * sizing.target(), 5);
+      if(report.moves_after_gluing > 0)
+        flipper.shape_passes([&](std::size_t a, std::size_t b) { return movable[a] || movable[b]; }, 3);
+    }
+    flipper.angle_passes();
+    report.flips_after_gluing = flipper.result().flips;
+  };
+  improve_after_gluing(true);
   // Only the points some triangle uses become vertices: the curves are sampled before the patches
   // are meshed, and a sample no patch triangle ends up using must not stay an isolated vertex.
   typedef typename boost::property_traits<decltype(get(CGAL::vertex_point, output))>::value_type Output_point;
@@ -843,10 +869,15 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
   if(Polygon_mesh_processing::does_self_intersect<ConcurrencyTag>(glued)
      && !Polygon_mesh_processing::does_self_intersect<ConcurrencyTag>(input, CGAL::parameters::vertex_point_map(vpm)))
   {
-    if(report.flips_after_gluing > 0)
+    if(report.moves_after_gluing > 0)
     {
+      improve_after_gluing(false);
+      glued = glue(triangles);
+    }
+    if(report.flips_after_gluing > 0 && Polygon_mesh_processing::does_self_intersect<ConcurrencyTag>(glued))
+    {
+      triangles = unflipped;
       report.flips_after_gluing = 0;
-      flips.undo(triangles);
       glued = glue(triangles);
     }
     if(Polygon_mesh_processing::does_self_intersect<ConcurrencyTag>(glued))

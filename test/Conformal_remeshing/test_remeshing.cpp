@@ -527,6 +527,79 @@ TEST(FlipsAfterGluing, ShapePassesFlipTheChosenEdgesOnly)
   EXPECT_GT(RM::Triangle_shape::skewness(points[c], points[a], points[b]), 0.45);
 }
 
+TEST(MovesAfterGluing, AStarRelaxesOnTheSurfaceButDoesNotCutACreaseOff)
+{
+  // A roof z = -slope |x| over [-2, 2]^2 (a crease along x = 0 when the slope is not 0) as the
+  // segmented surface, and on it a glued star: point 0, movable, with six neighbours around
+  // (shift, 0) at distance 1, two of them at (shift, +-1): on the crease when shift is 0.
+  typedef CGAL::Epick::Point_3 P;
+  typedef std::array<std::size_t, 3> T;
+  auto relax = [](double slope, double shift, double start_x, double start_y) {
+    CR::Poly_annulus_segmentation s;
+    const auto roof = [&](double x, double y) { return P(x, y, -slope * std::abs(x)); };
+    std::vector<std::vector<CR::Poly_annulus_segmentation::Vertex> > grid(17);
+    for(int i = 0; i <= 16; ++i)
+      for(int j = 0; j <= 16; ++j)
+        grid[i].push_back(s.mesh.add_vertex(roof(-2. + 0.25 * i, -2. + 0.25 * j)));
+    for(int i = 0; i < 16; ++i)
+      for(int j = 0; j < 16; ++j)
+      {
+        s.mesh.add_face(grid[i][j], grid[i + 1][j], grid[i + 1][j + 1]);
+        s.mesh.add_face(grid[i][j], grid[i + 1][j + 1], grid[i][j + 1]);
+      }
+    std::vector<P> points{roof(start_x, start_y)};
+    std::vector<T> star;
+    for(int k = 0; k < 6; ++k)
+    {
+      points.push_back(roof(shift + std::cos(CGAL_PI / 2. + k * CGAL_PI / 3.), std::sin(CGAL_PI / 2. + k * CGAL_PI / 3.)));
+      star.push_back(T{{0, std::size_t(1 + k), std::size_t(1 + (k + 1) % 6)}});
+    }
+    // The face under the start point, found by its distance.
+    std::vector<CR::Poly_annulus_segmentation::Face> point_face(points.size());
+    double nearest = 1e300;
+    for(auto f : s.mesh.faces())
+    {
+      const auto h = s.mesh.halfedge(f);
+      const double d = CGAL::squared_distance(points[0], K::Triangle_3(s.mesh.point(s.mesh.source(h)), s.mesh.point(s.mesh.target(h)),
+                                                                       s.mesh.point(s.mesh.target(s.mesh.next(h)))));
+      if(d < nearest)
+        nearest = d, point_face[0] = f;
+    }
+    const std::vector<char> movable{1, 0, 0, 0, 0, 0, 0};
+    const std::vector<P> before = points;
+    const std::size_t moves = RM::move_samples_after_gluing(s, points, point_face, star, movable, 30., 1.4, 5);
+    // Only point 0 moved, onto the roof, and its face holds it.
+    EXPECT_TRUE(std::equal(points.begin() + 1, points.end(), before.begin() + 1));
+    EXPECT_NEAR(points[0].z(), -slope * std::abs(points[0].x()), 1e-12);
+    const auto h = s.mesh.halfedge(point_face[0]);
+    EXPECT_LT(CGAL::squared_distance(points[0], K::Triangle_3(s.mesh.point(s.mesh.source(h)), s.mesh.point(s.mesh.target(h)),
+                                                               s.mesh.point(s.mesh.target(s.mesh.next(h))))), 1e-24);
+    double skewness_before = 0., skewness_after = 0.;
+    for(const T& t : star)
+    {
+      skewness_before += RM::Triangle_shape::skewness(before[t[0]], before[t[1]], before[t[2]]);
+      skewness_after += RM::Triangle_shape::skewness(points[t[0]], points[t[1]], points[t[2]]);
+    }
+    EXPECT_LE(skewness_after, skewness_before);
+    EXPECT_EQ(moves > 0, skewness_after < skewness_before);
+    return points[0];
+  };
+  // Flat: from off the centre to the centre.
+  const P flat = relax(0., 0., 0.3, 0.2);
+  EXPECT_LT(std::hypot(flat.x(), flat.y()), 0.02) << flat;
+  // On the crease, around a centre on it: along the crease to near the centre (the star's edges
+  // to (0, +-1) follow the crease, and the point leaves it only a little).
+  const P along = relax(1., 0., 0., 0.3);
+  EXPECT_LT(std::abs(along.y()), 0.05) << along;
+  EXPECT_LT(std::abs(along.x()), 0.1) << along; // measured: 0.06 off the crease
+  // On the crease, around a centre 0.3 off it: flat, the point goes there; on the roof it may
+  // leave the crease only as far as the moved star stays within 0.05 mean edges of it.
+  const P off_flat = relax(0., 0.3, 0., 0.);
+  EXPECT_NEAR(off_flat.x(), 0.3, 0.02) << off_flat;
+  const P off_roof = relax(1., 0.3, 0., 0.);
+  EXPECT_LT(off_roof.x(), 0.1) << off_roof; // measured: 0.04
+}
+
 TEST(KeptInputVertices, TheTipOfACoarseConeNotACreaseAFlatVertexOrATinyTip)
 {
   // A fan of 8 triangles around a centre vertex on a ring of radius `radius`, at height `z(x, y)`.

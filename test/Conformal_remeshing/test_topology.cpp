@@ -348,8 +348,12 @@ TEST(RemeshAnyTopology, CgalElephantGenusThree)
   Mesh elephant;
   ASSERT_TRUE(CR::read_and_check_mesh(std::string(CONFORMAL_REMESHING_CGAL_DATA) + "/meshes/elephant.off", elephant).is_valid());
   ASSERT_EQ(CR::check_mesh(elephant).total_genus(), 3);
-  const CR::Remeshing_report report = check_remeshing(elephant, remeshing_checks::Quality_bars(20.).mean_skewness_at_most(0.126));
+  // Issue 6's bars (20 degrees, mean skewness 0.12), with the angle held higher: the samples of
+  // the cuts and their neighbours, moved after gluing, took it from 20.7 to 28.4 degrees (and the
+  // mean skewness from 0.1242 to 0.1170).
+  const CR::Remeshing_report report = check_remeshing(elephant, remeshing_checks::Quality_bars(25.));
   EXPECT_GT(report.flips_after_gluing, 0u);
+  EXPECT_GT(report.moves_after_gluing, 1000u);
 }
 
 // The elephant at a target of 0.012 (0.87% of its diagonal). Its cuts between patches follow input
@@ -417,11 +421,15 @@ TEST(RemeshAnyTopology, PlaneCutThroughThePlate)
                     CR::parameters::cut_planes(planes, CR::parameters::features_angle(0.)), &output);
   EXPECT_EQ(report.plane_cuts, 1u);
   EXPECT_EQ(report.number_of_patches, 2u);
-  // The cut is sampled on the plane: output vertices lie exactly at mid-thickness.
+  // The cut is sampled on the plane, but it is a cut, not a feature: after gluing its samples
+  // move on the surface like other vertices, and most leave mid-thickness (26 of the 100 and more
+  // that were there stay, where no move helped).
   std::size_t on_plane = 0;
   for(auto v : output.vertices())
     on_plane += std::abs(output.point(v).z() - 0.5 * p.thickness) < 1e-9 * diagonal(plate);
-  EXPECT_GT(on_plane, 100u);
+  EXPECT_GT(report.moves_after_gluing, 100u);
+  EXPECT_GT(on_plane, 0u);
+  EXPECT_LT(on_plane, 100u);
 }
 
 TEST(RemeshAnyTopology, SegmentationGivesPolyAnnuli)
