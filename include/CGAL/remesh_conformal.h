@@ -93,11 +93,12 @@ struct Remeshing_report
   std::size_t clamped_vertices = 0;
   std::size_t optimization_flips = 0; ///< edge flips of the optimization on the surface
   /// edge flips on the glued mesh: between boundary samples and at moved points for shape, then
-  /// of triangles below 30 degrees; mostly across the cuts between patches (undone, all of them
-  /// and the moves, if they made the output intersect itself)
+  /// of triangles below 30 degrees; mostly across the cuts between patches (if the output
+  /// intersects itself with them and the moves, they are made again without the moves, then
+  /// none are)
   std::size_t flips_after_gluing = 0;
   /// vertex moves on the glued mesh: samples of the cuts between patches and their neighbours,
-  /// moved on the input surface for shape (undone with the flips)
+  /// moved on the input surface for shape (none if the output intersects itself with them)
   std::size_t moves_after_gluing = 0;
   /// wall-clock seconds of the stages (the flattening and meshing stages run patches in parallel)
   double seconds_segmentation = 0., seconds_flattening = 0., seconds_meshing_stage = 0., seconds_gluing = 0.;
@@ -811,11 +812,11 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
   // below 30 degrees flipped. Should the output intersect itself with all that and not without,
   // the flips are made again without the moves, and then none of them (below).
   auto is_sample = [&](std::size_t i) { return i < samples.points.size(); };
-  const std::vector<std::array<std::size_t, 3> > unflipped = triangles;
   const std::vector<Epick::Point_3> unmoved_points = points;
   const std::vector<Face> unmoved_faces = point_face;
+  internal::remeshing::Soup_flips flips; // of the last call, to undo
   auto improve_after_gluing = [&](bool with_moves) {
-    triangles = unflipped;
+    flips.undo(triangles);
     points = unmoved_points;
     point_face = unmoved_faces;
     internal::remeshing::Glued_soup_flipper flipper(
@@ -826,14 +827,15 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
     if(with_moves)
     {
       const std::vector<char> movable = internal::remeshing::points_around_cuts(samples, triangles, points.size());
-      report.moves_after_gluing = internal::remeshing::move_samples_after_gluing(
+      report.moves_after_gluing = internal::remeshing::move_points_after_gluing(
         segmentation, points, point_face, triangles, movable, (std::max)(30., min_angle),
         internal::remeshing::longest_edge_factor * sizing.target(), 5);
       if(report.moves_after_gluing > 0)
         flipper.shape_passes([&](std::size_t a, std::size_t b) { return movable[a] || movable[b]; }, 3);
     }
     flipper.angle_passes();
-    report.flips_after_gluing = flipper.result().flips;
+    flips = flipper.result();
+    report.flips_after_gluing = flips.flips;
   };
   improve_after_gluing(true);
   // Only the points some triangle uses become vertices: the curves are sampled before the patches
@@ -876,7 +878,7 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
     }
     if(report.flips_after_gluing > 0 && Polygon_mesh_processing::does_self_intersect<ConcurrencyTag>(glued))
     {
-      triangles = unflipped;
+      flips.undo(triangles);
       report.flips_after_gluing = 0;
       glued = glue(triangles);
     }

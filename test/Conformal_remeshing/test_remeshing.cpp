@@ -567,7 +567,7 @@ TEST(MovesAfterGluing, AStarRelaxesOnTheSurfaceButDoesNotCutACreaseOff)
     }
     const std::vector<char> movable{1, 0, 0, 0, 0, 0, 0};
     const std::vector<P> before = points;
-    const std::size_t moves = RM::move_samples_after_gluing(s, points, point_face, star, movable, 30., 1.4, 5);
+    const std::size_t moves = RM::move_points_after_gluing(s, points, point_face, star, movable, 30., 1.4, 5);
     // Only point 0 moved, onto the roof, and its face holds it.
     EXPECT_TRUE(std::equal(points.begin() + 1, points.end(), before.begin() + 1));
     EXPECT_NEAR(points[0].z(), -slope * std::abs(points[0].x()), 1e-12);

@@ -471,29 +471,24 @@ std::pair<double, std::array<double, 3> > largest_distance_of_samples(const Tria
   std::size_t farthest = std::size_t(std::max_element(squared_distance.begin(), squared_distance.end()) - squared_distance.begin());
   std::pair<double, Fast::Point_3> largest(squared_distance[farthest], points[farthest]);
 
-  // The triangles of the farthest face samples, each once, searched from their farthest sample.
-  std::vector<std::size_t> by_distance(face_samples.size());
-  std::iota(by_distance.begin(), by_distance.end(), std::size_t(0));
+  // The triangles of the farthest face samples, each searched from its farthest sample.
+  constexpr std::size_t none = std::size_t(-1);
+  std::vector<std::size_t> farthest_in_triangle(triangles.size(), none);
   const auto farther = [&](std::size_t a, std::size_t b) {
     return squared_distance[first_face_sample + a] > squared_distance[first_face_sample + b];
   };
-  std::vector<std::size_t> starts;
-  std::vector<char> taken(triangles.size(), 0);
-  for(std::size_t chunk = 4 * refined_triangles; starts.size() < refined_triangles && !by_distance.empty(); chunk *= 4)
+  for(std::size_t i = 0; i < face_samples.size(); ++i)
   {
-    const std::size_t n = (std::min)(chunk, by_distance.size());
-    std::partial_sort(by_distance.begin(), by_distance.begin() + n, by_distance.end(), farther);
-    starts.clear();
-    std::fill(taken.begin(), taken.end(), 0);
-    for(std::size_t i = 0; i < n && starts.size() < refined_triangles; ++i)
-      if(!taken[face_samples[by_distance[i]].triangle])
-      {
-        taken[face_samples[by_distance[i]].triangle] = 1;
-        starts.push_back(by_distance[i]);
-      }
-    if(n == by_distance.size())
-      break;
+    std::size_t& f = farthest_in_triangle[face_samples[i].triangle];
+    if(f == none || farther(i, f))
+      f = i;
   }
+  std::vector<std::size_t> starts;
+  std::copy_if(farthest_in_triangle.begin(), farthest_in_triangle.end(), std::back_inserter(starts),
+               [&](std::size_t i) { return i != none; });
+  const std::size_t searched = (std::min)(refined_triangles, starts.size());
+  std::partial_sort(starts.begin(), starts.begin() + searched, starts.end(), farther);
+  starts.resize(searched);
   std::vector<std::pair<double, Fast::Point_3> > refined(starts.size());
   for_each_index<Concurrency_tag>(starts.size(), [&](std::size_t s) {
     const Face_sample& start = face_samples[starts[s]];

@@ -180,6 +180,7 @@ private:
     if(r.d == r.c || is_edge(r.c, r.d))
       return r;
     const Epick::Point_3 &a = points_[r.a], &b = points_[r.b], &c = points_[r.c], &d = points_[r.d];
+    const auto unit_normal = &Triangle_shape::unit_normal;
     const Epick::Vector_3 n_t = unit_normal(c, a, b), n_u = unit_normal(d, b, a), mean = n_t + n_u;
     if(!(CGAL::cross_product(a - c, d - c) * mean > 0.) || !(CGAL::cross_product(d - c, b - c) * mean > 0.))
       return r;
@@ -245,13 +246,6 @@ private:
   bool is_edge(std::size_t c, std::size_t d) const
   {
     return std::any_of(star_[c].begin(), star_[c].end(), [&](std::size_t u) { return corner_of(u, d) < 3; });
-  }
-
-  static Epick::Vector_3 unit_normal(const Epick::Point_3& p, const Epick::Point_3& q, const Epick::Point_3& r)
-  {
-    const Epick::Vector_3 n = CGAL::cross_product(q - p, r - p);
-    const double length = std::sqrt(n.squared_length());
-    return length > 0. ? n / length : CGAL::NULL_VECTOR;
   }
 
   const std::vector<Epick::Point_3>& points_;

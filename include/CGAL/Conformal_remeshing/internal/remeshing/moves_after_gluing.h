@@ -111,7 +111,7 @@ constexpr double largest_cut_off = 0.05;
 /// `longest_edge` (or than it was), and leaves the point's first position within
 /// `largest_cut_off` mean edge lengths of the star. `point_face` follows the moved points.
 /// In up to `passes` passes; returns the moves made.
-inline std::size_t move_samples_after_gluing(const Poly_annulus_segmentation& s, std::vector<Epick::Point_3>& points,
+inline std::size_t move_points_after_gluing(const Poly_annulus_segmentation& s, std::vector<Epick::Point_3>& points,
                                              std::vector<Poly_annulus_segmentation::Face>& point_face,
                                              const std::vector<std::array<std::size_t, 3> >& triangles,
                                              const std::vector<char>& movable, double target_degrees, double longest_edge,
@@ -126,11 +126,7 @@ inline std::size_t move_samples_after_gluing(const Poly_annulus_segmentation& s,
         star[t[k]].emplace_back(t[(k + 1) % 3], t[(k + 2) % 3]);
   const double cos_target = std::cos(target_degrees * CGAL_PI / 180.), cos_turn = std::cos(30. * CGAL_PI / 180.);
   const double longest_squared = longest_edge * longest_edge;
-  auto unit_normal = [](const Point_3& p, const Point_3& q, const Point_3& r) {
-    const Vector_3 n = CGAL::cross_product(q - p, r - p);
-    const double length = std::sqrt(n.squared_length());
-    return length > 0. ? n / length : CGAL::NULL_VECTOR;
-  };
+  const auto unit_normal = &Triangle_shape::unit_normal;
   std::vector<Poly_annulus_segmentation::Face> visited;
   const std::vector<Point_3> original = points;
   std::size_t moves = 0;
@@ -166,22 +162,21 @@ inline std::size_t move_samples_after_gluing(const Poly_annulus_segmentation& s,
       auto evaluate = [&](const Vector_3& step, std::pair<Point_3, Poly_annulus_segmentation::Face>& located) {
         located = closest_point_nearby(s, point_face[v], p + step, 2. * std::sqrt(step.squared_length()) + 1e-3 * mean_edge, visited);
         const Point_3& x = located.first;
-        double sum = 0.;
+        const double refused = 2. * energy + 1.;
+        // The star must not cut the surface off where the point was first (a turn of a cut at an
+        // input vertex is often a crease): the distance from there to the moved star is bounded.
+        double sum = 0., cut_off = std::numeric_limits<double>::infinity();
         for(std::size_t i = 0; i < ring.size(); ++i)
         {
           const Point_3 &q = points[ring[i].first], &r = points[ring[i].second];
           if(!(unit_normal(x, q, r) * normals[i] >= cos_turn) || Triangle_shape::min_angle_cosine(x, q, r) > limit
              || CGAL::squared_distance(x, q) > (std::max)(longest_squared, CGAL::squared_distance(p, q)))
-            return 2. * energy + 1.;
+            return refused;
           sum += Triangle_shape::skewness(x, q, r);
+          cut_off = (std::min)(cut_off, CGAL::squared_distance(original[v], Epick::Triangle_3(x, q, r)));
         }
-        // The star must not cut the surface where the point was first (a turn of a cut at an
-        // input vertex is often a crease): the distance from there to the moved star is bounded.
-        double cut_off = std::numeric_limits<double>::infinity();
-        for(std::size_t i = 0; i < ring.size(); ++i)
-          cut_off = (std::min)(cut_off, CGAL::squared_distance(original[v], Epick::Triangle_3(x, points[ring[i].first], points[ring[i].second])));
         if(cut_off > CGAL::square(largest_cut_off * mean_edge))
-          return 2. * energy + 1.;
+          return refused;
         return sum;
       };
       std::pair<Point_3, Poly_annulus_segmentation::Face> best(p, point_face[v]), located;

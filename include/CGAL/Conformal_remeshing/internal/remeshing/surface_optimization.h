@@ -80,6 +80,14 @@ struct Triangle_shape
     return x < 0. ? CGAL_PI - angle : angle;
   }
 
+  /// the unit normal of the triangle (the null vector for a degenerate one)
+  static Epick::Vector_3 unit_normal(const Epick::Point_3& p, const Epick::Point_3& q, const Epick::Point_3& r)
+  {
+    const Epick::Vector_3 n = CGAL::cross_product(q - p, r - p);
+    const double length = std::sqrt(n.squared_length());
+    return length > 0. ? n / length : CGAL::NULL_VECTOR;
+  }
+
   static double angle(const Epick::Point_3& p, const Epick::Point_3& q, const Epick::Point_3& r) // at p
   {
     const Epick::Vector_3 u = q - p, v = r - p;
