@@ -100,6 +100,8 @@ struct Remeshing_report
   /// vertex moves on the glued mesh: samples of the cuts between patches and their neighbours,
   /// moved on the input surface for shape (none if the output intersects itself with them)
   std::size_t moves_after_gluing = 0;
+  /// rounds of meshing again with shorter edges where the output intersected itself (0 to 3)
+  std::size_t self_intersection_refinements = 0;
   /// wall-clock seconds of the stages (the flattening and meshing stages run patches in parallel)
   double seconds_segmentation = 0., seconds_flattening = 0., seconds_meshing_stage = 0., seconds_gluing = 0.;
   /// seconds summed over the patches (thread time)
@@ -510,7 +512,9 @@ inline std::string describe_glue_defect(const std::vector<std::array<std::size_t
 /// their shared samples: the output is closed and manifold where the input is, with the input's
 /// components, boundary loops and genus. On the glued output, edges across the cuts between
 /// patches are flipped and the cuts' samples and their neighbours moved on the input surface (a
-/// closest-point search around their face) where that improves the shapes. A patch whose flattening fails, or whose local scale
+/// closest-point search around their face) where that improves the shapes. Where the glued output
+/// intersects itself and the input does not, those places are meshed again with shorter edges
+/// (half the target, then a quarter, then an eighth). A patch whose flattening fails, or whose local scale
 /// varies by more than `maximum_scale_ratio`, is bisected and flattened again.
 ///
 /// \tparam ConcurrencyTag `CGAL::Parallel_if_available_tag` (the default: patches are flattened and
@@ -578,7 +582,9 @@ inline std::string describe_glue_defect(const std::vector<std::array<std::size_t
 ///         code when a patch cannot be flattened even after bisection (the message says why);
 ///         with `Error_code::TIME_LIMIT_EXCEEDED` past the `maximum_running_time`; with
 ///         `Error_code::NOT_AN_EMBEDDING` when the remeshed surface would intersect itself where
-///         the input does not (checked with exact predicates; `output` is then left untouched).
+///         the input does not (checked with exact predicates) even after those places were meshed
+///         again three times with shorter edges, down to an eighth of the target (`output` is then
+///         left untouched).
 template <typename ConcurrencyTag = CGAL::Parallel_if_available_tag, typename TriangleMesh,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& output,
@@ -671,255 +677,294 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
   }
   report.seconds_flattening = seconds_since(start);
 
-  // --- shared boundary samples, then every patch meshed and pulled back -------------------------
-  start = Clock::now();
-  progress("meshing " + std::to_string(patches.size()) + " patches");
-  // A patch thinner than the sample spacing can have a boundary chord that crosses its other side
-  // in the plane (see `check_glue()`): the curves of such chords are sampled twice as densely and
-  // every patch is meshed again (resampling renumbers the samples), up to `max_halvings` times.
-  // Where two patches join the same two samples by a diagonal (both flattenings nearly straight
-  // along a short curve between junctions), all but the first of them split it and are meshed
-  // again; splitting adds no edge between samples, so this ends unless smoothing brings new ones.
-  const internal::remeshing::Sizing sizing(segmentation, h, sizing_field, chord_error);
-  const int max_halvings = 6, max_diagonal_rounds = 4;
-  std::vector<int> halvings;
-  internal::remeshing::Curve_samples samples;
-  std::vector<internal::remeshing::Remeshed_patch> remeshed(patches.size());
+  // --- meshing and gluing, again with shorter edges where the output intersects itself --------
+  // Where two parts of the surface come closer than the output's chords deviate from it (nearly
+  // touching sheets), the glued output can intersect itself. Those places are then meshed again
+  // (the flattenings are kept) with edges of half the target there, graded to the target by half
+  // the distance, then a quarter, up to `max_refinements` rounds.
+  const int max_refinements = 3;
+  std::vector<Epick::Point_3> crossings; // centroids of intersecting triangles, a quarter target apart
   std::vector<std::vector<double> > scales(patches.size()); // each flattening's local scale, once
-  std::vector<std::set<std::pair<std::size_t, std::size_t> > > diagonals_to_split;
-  std::vector<std::size_t> to_mesh;
-  std::vector<std::string> failures;
-  bool resample = true;
-  for(int diagonal_round = 0;;)
-  {
-    if(resample)
-    {
-      samples = internal::remeshing::sample_boundary_curves(segmentation, sizing, corner, halvings);
-      halvings.resize(samples.number_of_curves, 0);
-      diagonals_to_split.assign(patches.size(), {});
-      to_mesh.resize(patches.size());
-      std::iota(to_mesh.begin(), to_mesh.end(), std::size_t(0));
-    }
-    failures.assign(patches.size(), std::string());
-    Conformal_remeshing::internal::for_each_index<ConcurrencyTag>(to_mesh.size(), [&](std::size_t i) {
-      const std::size_t p = to_mesh[i];
-      try
-      {
-        time_limit.check("while meshing the patches");
-        if(scales[p].empty()) // a patch may be meshed again (denser curves, split diagonals)
-          scales[p] = internal::remeshing::local_scale(flattenings[p]);
-        remeshed[p] = internal::remeshing::remesh_flattened_patch(flattenings[p], scales[p], patches[p], samples, sizing, min_angle,
-                                                                  smoothing, optimization_rounds, diagonals_to_split[p]);
-      }
-      catch(const Error& e)
-      {
-        failures[p] = e.what();
-      }
-    });
-    time_limit.check("while meshing the patches");
-    for(std::size_t p = 0; p < patches.size(); ++p)
-      if(!failures[p].empty())
-        throw Error(Error_code::NOT_AN_EMBEDDING, "remesh_conformal: patch " + std::to_string(p) + ": " + failures[p]);
-
-    std::set<std::size_t> curves_to_refine;
-    std::size_t first_failing = patches.size();
-    for(std::size_t p = 0; p < patches.size(); ++p)
-      for(const auto& chord : remeshed[p].chords_not_glued)
-      {
-        first_failing = (std::min)(first_failing, p);
-        curves_to_refine.insert(samples.curve_of_chord.at(chord));
-      }
-    resample = !curves_to_refine.empty();
-    if(resample)
-    {
-      const bool refinable = std::all_of(curves_to_refine.begin(), curves_to_refine.end(),
-                                         [&](std::size_t c) { return halvings[c] < max_halvings; });
-      if(!refinable)
-        throw Error(Error_code::NOT_AN_EMBEDDING,
-                    "remesh_conformal: patch " + std::to_string(first_failing) + ": its planar mesh does not glue to its neighbours at "
-                      + std::to_string(remeshed[first_failing].chords_not_glued.size())
-                      + " boundary chords (not triangle edges in the loop's direction, or joined twice) even with boundary samples "
-                      + std::to_string(1 << max_halvings) + " times denser");
-      progress("sampling " + std::to_string(curves_to_refine.size()) + " boundary curves of thin patches more densely");
-      for(std::size_t c : curves_to_refine)
-        ++halvings[c];
-      report.refined_boundary_curves += curves_to_refine.size();
-      continue;
-    }
-
-    std::map<std::pair<std::size_t, std::size_t>, std::vector<std::size_t> > patches_of_diagonal;
-    for(std::size_t p = 0; p < patches.size(); ++p)
-      for(const auto& diagonal : remeshed[p].sample_diagonals)
-        patches_of_diagonal[diagonal].push_back(p);
-    std::set<std::size_t> to_split;
-    for(const auto& d : patches_of_diagonal)
-      for(std::size_t i = 1; i < d.second.size(); ++i)
-      {
-        diagonals_to_split[d.second[i]].insert(d.first);
-        to_split.insert(d.second[i]);
-      }
-    if(to_split.empty())
-      break;
-    if(++diagonal_round > max_diagonal_rounds)
-      throw Error(Error_code::NOT_AN_EMBEDDING, "remesh_conformal: patch " + std::to_string(*to_split.begin())
-                                                  + " still joins two boundary samples that another triangle edge joins "
-                                                  "(four triangles on one edge) after "
-                                                  + std::to_string(max_diagonal_rounds) + " rounds of splitting such diagonals");
-    progress("splitting diagonals shared by " + std::to_string(to_split.size() + 1) + " patches or more");
-    report.split_diagonals += to_split.size();
-    to_mesh.assign(to_split.begin(), to_split.end());
-  }
-  report.boundary_samples = samples.points.size();
-  report.boundary_curves = samples.number_of_curves;
-  report.seconds_meshing_stage = seconds_since(start);
-  for(const auto& r : remeshed)
-  {
-    report.seconds_planar_meshing += r.seconds_planar_meshing;
-    report.seconds_optimization += r.seconds_optimization;
-    report.seconds_pull_back += r.seconds_pull_back;
-    report.optimization_flips += r.flips;
-    report.clamped_vertices += r.clamped_vertices;
-  }
-
-  // --- gluing at the shared samples ------------------------------------------------------------
-  start = Clock::now();
-  progress("gluing");
-  std::vector<Epick::Point_3> points(samples.points);
-  std::vector<Face> point_face(samples.face);
-  std::vector<std::array<std::size_t, 3> > triangles;
-  std::vector<std::size_t> patch_of_triangle;
-  for(const auto& r : remeshed)
-  {
-    patch_of_triangle.insert(patch_of_triangle.end(), r.triangles.size(), std::size_t(&r - remeshed.data()));
-    const std::size_t offset = points.size() - samples.points.size();
-    points.insert(points.end(), r.interior_points.begin(), r.interior_points.end());
-    point_face.insert(point_face.end(), r.interior_faces.begin(), r.interior_faces.end());
-    for(std::array<std::size_t, 3> t : r.triangles)
-    {
-      for(std::size_t& c : t)
-        if(c >= samples.points.size())
-          c += offset;
-      triangles.push_back(t);
-    }
-  }
-  if(!Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(triangles))
-    throw Error(Error_code::NOT_AN_EMBEDDING, "remesh_conformal: the remeshed patches do not glue into a manifold: "
-                                                + internal::remeshing::describe_glue_defect(triangles, patch_of_triangle, points)
-                                                + " (internal error)");
-  // The patches kept their boundary chords and samples; now a cut's chords can be flipped too
-  // (for shape: edges between two samples), its samples and their neighbours moved on the surface
-  // (moves_after_gluing.h), the edges at moved points flipped for shape again, then the triangles
-  // below 30 degrees flipped. Should the output intersect itself with all that and not without,
-  // the flips are made again without the moves, and then none of them (below).
-  auto is_sample = [&](std::size_t i) { return i < samples.points.size(); };
-  const std::vector<Epick::Point_3> unmoved_points = points;
-  const std::vector<Face> unmoved_faces = point_face;
-  internal::remeshing::Soup_flips flips; // of the last call, to undo
-  auto improve_after_gluing = [&](bool with_moves) {
-    flips.undo(triangles);
-    points = unmoved_points;
-    point_face = unmoved_faces;
-    internal::remeshing::Glued_soup_flipper flipper(
-      points, triangles, [&](std::size_t a, std::size_t b) { return is_sample(a) && is_sample(b) && samples.is_kept_chord(a, b); },
-      (std::max)(30., min_angle));
-    flipper.shape_passes([&](std::size_t a, std::size_t b) { return is_sample(a) && is_sample(b); }, 3);
-    report.moves_after_gluing = 0;
-    if(with_moves)
-    {
-      const std::vector<char> movable = internal::remeshing::points_around_cuts(samples, triangles, points.size());
-      report.moves_after_gluing = internal::remeshing::move_points_after_gluing(
-        segmentation, points, point_face, triangles, movable, (std::max)(30., min_angle),
-        internal::remeshing::longest_edge_factor * sizing.target(), 5);
-      if(report.moves_after_gluing > 0)
-        flipper.shape_passes([&](std::size_t a, std::size_t b) { return movable[a] || movable[b]; }, 3);
-    }
-    flipper.angle_passes();
-    flips = flipper.result();
-    report.flips_after_gluing = flips.flips;
+  int input_intersects = -1; // not known yet
+  auto input_self_intersects = [&]() {
+    if(input_intersects < 0)
+      input_intersects = Polygon_mesh_processing::does_self_intersect<ConcurrencyTag>(input, CGAL::parameters::vertex_point_map(vpm));
+    return input_intersects == 1;
   };
-  improve_after_gluing(true);
-  // Only the points some triangle uses become vertices: the curves are sampled before the patches
-  // are meshed, and a sample no patch triangle ends up using must not stay an isolated vertex.
-  typedef typename boost::property_traits<decltype(get(CGAL::vertex_point, output))>::value_type Output_point;
-  std::vector<std::size_t> used_points;
-  auto glue = [&](std::vector<std::array<std::size_t, 3> > soup) {
-    std::vector<std::size_t> vertex_index(points.size(), 0);
-    used_points.clear();
-    for(auto& t : soup)
-      for(std::size_t& c : t)
+  for(int refinement = 0;; ++refinement)
+  {
+    // --- shared boundary samples, then every patch meshed and pulled back -----------------------
+    start = Clock::now();
+    progress("meshing " + std::to_string(patches.size()) + " patches");
+    // A patch thinner than the sample spacing can have a boundary chord that crosses its other side
+    // in the plane (see `check_glue()`): the curves of such chords are sampled twice as densely and
+    // every patch is meshed again (resampling renumbers the samples), up to `max_halvings` times.
+    // Where two patches join the same two samples by a diagonal (both flattenings nearly straight
+    // along a short curve between junctions), all but the first of them split it and are meshed
+    // again; splitting adds no edge between samples, so this ends unless smoothing brings new ones.
+    // Near the places where an earlier round's output intersected itself, the edges are shorter.
+    const internal::remeshing::Sizing sizing(segmentation, h,
+                                             crossings.empty() ? sizing_field
+                                                               : internal::remeshing::shorter_near(sizing_field, crossings, h / double(1 << refinement)),
+                                             chord_error);
+    const int max_halvings = 6, max_diagonal_rounds = 4;
+    std::vector<int> halvings;
+    internal::remeshing::Curve_samples samples;
+    std::vector<internal::remeshing::Remeshed_patch> remeshed(patches.size());
+    std::vector<std::set<std::pair<std::size_t, std::size_t> > > diagonals_to_split;
+    std::vector<std::size_t> to_mesh;
+    std::vector<std::string> failures;
+    bool resample = true;
+    for(int diagonal_round = 0;;)
+    {
+      if(resample)
       {
-        if(vertex_index[c] == 0)
+        samples = internal::remeshing::sample_boundary_curves(segmentation, sizing, corner, halvings);
+        halvings.resize(samples.number_of_curves, 0);
+        diagonals_to_split.assign(patches.size(), {});
+        to_mesh.resize(patches.size());
+        std::iota(to_mesh.begin(), to_mesh.end(), std::size_t(0));
+      }
+      failures.assign(patches.size(), std::string());
+      Conformal_remeshing::internal::for_each_index<ConcurrencyTag>(to_mesh.size(), [&](std::size_t i) {
+        const std::size_t p = to_mesh[i];
+        try
         {
-          used_points.push_back(c);
-          vertex_index[c] = used_points.size();
+          time_limit.check("while meshing the patches");
+          if(scales[p].empty()) // a patch may be meshed again (denser curves, split diagonals)
+            scales[p] = internal::remeshing::local_scale(flattenings[p]);
+          remeshed[p] = internal::remeshing::remesh_flattened_patch(flattenings[p], scales[p], patches[p], samples, sizing, min_angle,
+                                                                    smoothing, optimization_rounds, diagonals_to_split[p]);
         }
-        c = vertex_index[c] - 1;
+        catch(const Error& e)
+        {
+          failures[p] = e.what();
+        }
+      });
+      time_limit.check("while meshing the patches");
+      for(std::size_t p = 0; p < patches.size(); ++p)
+        if(!failures[p].empty())
+          throw Error(Error_code::NOT_AN_EMBEDDING, "remesh_conformal: patch " + std::to_string(p) + ": " + failures[p]);
+
+      std::set<std::size_t> curves_to_refine;
+      std::size_t first_failing = patches.size();
+      for(std::size_t p = 0; p < patches.size(); ++p)
+        for(const auto& chord : remeshed[p].chords_not_glued)
+        {
+          first_failing = (std::min)(first_failing, p);
+          curves_to_refine.insert(samples.curve_of_chord.at(chord));
+        }
+      resample = !curves_to_refine.empty();
+      if(resample)
+      {
+        const bool refinable = std::all_of(curves_to_refine.begin(), curves_to_refine.end(),
+                                           [&](std::size_t c) { return halvings[c] < max_halvings; });
+        if(!refinable)
+          throw Error(Error_code::NOT_AN_EMBEDDING,
+                      "remesh_conformal: patch " + std::to_string(first_failing) + ": its planar mesh does not glue to its neighbours at "
+                        + std::to_string(remeshed[first_failing].chords_not_glued.size())
+                        + " boundary chords (not triangle edges in the loop's direction, or joined twice) even with boundary samples "
+                        + std::to_string(1 << max_halvings) + " times denser");
+        progress("sampling " + std::to_string(curves_to_refine.size()) + " boundary curves of thin patches more densely");
+        for(std::size_t c : curves_to_refine)
+          ++halvings[c];
+        report.refined_boundary_curves += curves_to_refine.size();
+        continue;
       }
-    std::vector<Output_point> output_points;
-    output_points.reserve(used_points.size());
-    for(std::size_t i : used_points)
-      output_points.push_back(Output_point(points[i].x(), points[i].y(), points[i].z()));
-    TriangleMesh mesh;
-    Polygon_mesh_processing::polygon_soup_to_polygon_mesh(output_points, soup, mesh);
-    return mesh;
-  };
-  TriangleMesh glued = glue(triangles);
-  // No self-intersection may be created (exact predicates): such a remeshing is refused, not
-  // returned, and one place where it happens is named. Seen where sheets nearly touch (closer
-  // than the output's chords deviate from the surface) and where false sharp features cut a bent
-  // sliver sheet into many small patches.
-  if(Polygon_mesh_processing::does_self_intersect<ConcurrencyTag>(glued)
-     && !Polygon_mesh_processing::does_self_intersect<ConcurrencyTag>(input, CGAL::parameters::vertex_point_map(vpm)))
-  {
-    if(report.moves_after_gluing > 0)
-    {
-      improve_after_gluing(false);
-      glued = glue(triangles);
+
+      std::map<std::pair<std::size_t, std::size_t>, std::vector<std::size_t> > patches_of_diagonal;
+      for(std::size_t p = 0; p < patches.size(); ++p)
+        for(const auto& diagonal : remeshed[p].sample_diagonals)
+          patches_of_diagonal[diagonal].push_back(p);
+      std::set<std::size_t> to_split;
+      for(const auto& d : patches_of_diagonal)
+        for(std::size_t i = 1; i < d.second.size(); ++i)
+        {
+          diagonals_to_split[d.second[i]].insert(d.first);
+          to_split.insert(d.second[i]);
+        }
+      if(to_split.empty())
+        break;
+      if(++diagonal_round > max_diagonal_rounds)
+        throw Error(Error_code::NOT_AN_EMBEDDING, "remesh_conformal: patch " + std::to_string(*to_split.begin())
+                                                    + " still joins two boundary samples that another triangle edge joins "
+                                                    "(four triangles on one edge) after "
+                                                    + std::to_string(max_diagonal_rounds) + " rounds of splitting such diagonals");
+      progress("splitting diagonals shared by " + std::to_string(to_split.size() + 1) + " patches or more");
+      report.split_diagonals += to_split.size();
+      to_mesh.assign(to_split.begin(), to_split.end());
     }
-    if(report.flips_after_gluing > 0 && Polygon_mesh_processing::does_self_intersect<ConcurrencyTag>(glued))
+    report.boundary_samples = samples.points.size();
+    report.boundary_curves = samples.number_of_curves;
+    report.seconds_meshing_stage += seconds_since(start);
+    for(const auto& r : remeshed)
     {
+      report.seconds_planar_meshing += r.seconds_planar_meshing;
+      report.seconds_optimization += r.seconds_optimization;
+      report.seconds_pull_back += r.seconds_pull_back;
+      report.optimization_flips += r.flips;
+      report.clamped_vertices += r.clamped_vertices;
+    }
+
+    // --- gluing at the shared samples ----------------------------------------------------------
+    start = Clock::now();
+    progress("gluing");
+    std::vector<Epick::Point_3> points(samples.points);
+    std::vector<Face> point_face(samples.face);
+    std::vector<std::array<std::size_t, 3> > triangles;
+    std::vector<std::size_t> patch_of_triangle;
+    for(const auto& r : remeshed)
+    {
+      patch_of_triangle.insert(patch_of_triangle.end(), r.triangles.size(), std::size_t(&r - remeshed.data()));
+      const std::size_t offset = points.size() - samples.points.size();
+      points.insert(points.end(), r.interior_points.begin(), r.interior_points.end());
+      point_face.insert(point_face.end(), r.interior_faces.begin(), r.interior_faces.end());
+      for(std::array<std::size_t, 3> t : r.triangles)
+      {
+        for(std::size_t& c : t)
+          if(c >= samples.points.size())
+            c += offset;
+        triangles.push_back(t);
+      }
+    }
+    if(!Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(triangles))
+      throw Error(Error_code::NOT_AN_EMBEDDING, "remesh_conformal: the remeshed patches do not glue into a manifold: "
+                                                  + internal::remeshing::describe_glue_defect(triangles, patch_of_triangle, points)
+                                                  + " (internal error)");
+    // The patches kept their boundary chords and samples; now a cut's chords can be flipped too
+    // (for shape: edges between two samples), its samples and their neighbours moved on the surface
+    // (moves_after_gluing.h), the edges at moved points flipped for shape again, then the triangles
+    // below 30 degrees flipped. Should the output intersect itself with all that and not without,
+    // the flips are made again without the moves, and then none of them (below).
+    auto is_sample = [&](std::size_t i) { return i < samples.points.size(); };
+    const std::vector<Epick::Point_3> unmoved_points = points;
+    const std::vector<Face> unmoved_faces = point_face;
+    internal::remeshing::Soup_flips flips; // of the last call, to undo
+    auto improve_after_gluing = [&](bool with_moves) {
       flips.undo(triangles);
-      report.flips_after_gluing = 0;
-      glued = glue(triangles);
-    }
-    if(Polygon_mesh_processing::does_self_intersect<ConcurrencyTag>(glued))
+      points = unmoved_points;
+      point_face = unmoved_faces;
+      internal::remeshing::Glued_soup_flipper flipper(
+        points, triangles, [&](std::size_t a, std::size_t b) { return is_sample(a) && is_sample(b) && samples.is_kept_chord(a, b); },
+        (std::max)(30., min_angle));
+      flipper.shape_passes([&](std::size_t a, std::size_t b) { return is_sample(a) && is_sample(b); }, 3);
+      report.moves_after_gluing = 0;
+      if(with_moves)
+      {
+        const std::vector<char> movable = internal::remeshing::points_around_cuts(samples, triangles, points.size());
+        report.moves_after_gluing = internal::remeshing::move_points_after_gluing(
+          segmentation, points, point_face, triangles, movable, (std::max)(30., min_angle),
+          internal::remeshing::longest_edge_factor * sizing.target(), 5);
+        if(report.moves_after_gluing > 0)
+          flipper.shape_passes([&](std::size_t a, std::size_t b) { return movable[a] || movable[b]; }, 3);
+      }
+      flipper.angle_passes();
+      flips = flipper.result();
+      report.flips_after_gluing = flips.flips;
+    };
+    improve_after_gluing(true);
+    // Only the points some triangle uses become vertices: the curves are sampled before the patches
+    // are meshed, and a sample no patch triangle ends up using must not stay an isolated vertex.
+    typedef typename boost::property_traits<decltype(get(CGAL::vertex_point, output))>::value_type Output_point;
+    std::vector<std::size_t> used_points;
+    auto glue = [&](std::vector<std::array<std::size_t, 3> > soup) {
+      std::vector<std::size_t> vertex_index(points.size(), 0);
+      used_points.clear();
+      for(auto& t : soup)
+        for(std::size_t& c : t)
+        {
+          if(vertex_index[c] == 0)
+          {
+            used_points.push_back(c);
+            vertex_index[c] = used_points.size();
+          }
+          c = vertex_index[c] - 1;
+        }
+      std::vector<Output_point> output_points;
+      output_points.reserve(used_points.size());
+      for(std::size_t i : used_points)
+        output_points.push_back(Output_point(points[i].x(), points[i].y(), points[i].z()));
+      TriangleMesh mesh;
+      Polygon_mesh_processing::polygon_soup_to_polygon_mesh(output_points, soup, mesh);
+      return mesh;
+    };
+    TriangleMesh glued = glue(triangles);
+    // No self-intersection may be created (exact predicates): where the output intersects itself
+    // and the input does not, the post-gluing flips and moves are given up first, then the places
+    // are meshed again with shorter edges (below).
+    bool intersects = Polygon_mesh_processing::does_self_intersect<ConcurrencyTag>(glued) && !input_self_intersects();
+    if(intersects)
     {
-      typedef typename boost::graph_traits<TriangleMesh>::face_descriptor Glued_face;
-      std::vector<std::pair<Glued_face, Glued_face> > intersecting;
-      Polygon_mesh_processing::self_intersections(glued, std::back_inserter(intersecting));
+      if(report.moves_after_gluing > 0)
+      {
+        improve_after_gluing(false);
+        glued = glue(triangles);
+      }
+      if(report.flips_after_gluing > 0 && Polygon_mesh_processing::does_self_intersect<ConcurrencyTag>(glued))
+      {
+        flips.undo(triangles);
+        report.flips_after_gluing = 0;
+        glued = glue(triangles);
+      }
+      intersects = Polygon_mesh_processing::does_self_intersect<ConcurrencyTag>(glued);
+    }
+    report.seconds_gluing += seconds_since(start);
+    if(!intersects)
+    {
+      output = std::move(glued);
+      if(locations != nullptr)
+      {
+        // The soup's points become the mesh's vertices in order.
+        locations->clear();
+        for(std::size_t i : used_points)
+        {
+          const std::size_t f = segmentation.input_face[point_face[i]];
+          locations->push_back(Surface_location{f, internal::remeshing::barycentric(points[i], input_triangle[f])});
+        }
+      }
+      break;
+    }
+    typedef typename boost::graph_traits<TriangleMesh>::face_descriptor Glued_face;
+    std::vector<std::pair<Glued_face, Glued_face> > intersecting;
+    Polygon_mesh_processing::self_intersections(glued, std::back_inserter(intersecting));
+    const auto vp = get(CGAL::vertex_point, glued);
+    auto centroid = [&](Glued_face f) {
+      double c[3] = {0., 0., 0.};
+      for(auto v : CGAL::vertices_around_face(halfedge(f, glued), glued))
+      {
+        const auto& p = get(vp, v);
+        c[0] += CGAL::to_double(p.x()) / 3.;
+        c[1] += CGAL::to_double(p.y()) / 3.;
+        c[2] += CGAL::to_double(p.z()) / 3.;
+      }
+      return Epick::Point_3(c[0], c[1], c[2]);
+    };
+    if(refinement == max_refinements || intersecting.empty())
+    {
       std::ostringstream where;
       if(!intersecting.empty())
       {
-        const auto h = halfedge(intersecting.front().first, glued);
-        const auto vp = get(CGAL::vertex_point, glued);
-        const auto& a = get(vp, source(h, glued));
-        const auto& b = get(vp, target(h, glued));
-        const auto& c = get(vp, target(next(h, glued), glued));
-        where << " near (" << (CGAL::to_double(a.x()) + CGAL::to_double(b.x()) + CGAL::to_double(c.x())) / 3. << ", "
-              << (CGAL::to_double(a.y()) + CGAL::to_double(b.y()) + CGAL::to_double(c.y())) / 3. << ", "
-              << (CGAL::to_double(a.z()) + CGAL::to_double(b.z()) + CGAL::to_double(c.z())) / 3. << ")";
-      }
+      const Epick::Point_3 c = centroid(intersecting.front().first);
+      where << " near (" << c.x() << ", " << c.y() << ", " << c.z() << ")";
+    }
       throw Error(Error_code::NOT_AN_EMBEDDING,
                   "remesh_conformal: the remeshed patches intersect each other" + where.str()
-                  + ", where the input does not intersect itself: two parts of the surface come closer there than the "
-                    "output's chords deviate from it (nearly touching sheets; a smaller target edge length may help), "
-                    "or false sharp features cut a bent surface into many patches (features_angle(0) may help)");
+                  + ", where the input does not intersect itself, even with edges of 1/" + std::to_string(1 << max_refinements)
+                  + " of the target there: two parts of the surface come closer there than the output's chords deviate from it "
+                    "(nearly touching sheets; a smaller target edge length may help), or false sharp features cut a bent surface "
+                    "into many patches (features_angle(0) may help)");
     }
-  }
-  output = std::move(glued);
-  if(locations != nullptr)
-  {
-    // The soup's points become the mesh's vertices in order.
-    locations->clear();
-    for(std::size_t i : used_points)
-    {
-      const std::size_t f = segmentation.input_face[point_face[i]];
-      locations->push_back(Surface_location{f, internal::remeshing::barycentric(points[i], input_triangle[f])});
-    }
+    const std::size_t known = crossings.size();
+    for(const auto& pair : intersecting)
+      for(Glued_face f : {pair.first, pair.second})
+        internal::remeshing::add_if_far(crossings, centroid(f), 0.25 * h);
+    report.self_intersection_refinements = std::size_t(refinement) + 1;
+    progress("the output intersects itself at " + std::to_string(intersecting.size()) + " pairs of triangles ("
+             + std::to_string(crossings.size() - known) + " new places): meshing again with edges of 1/"
+             + std::to_string(1 << (refinement + 1)) + " of the target there");
   }
   report.output_vertices = num_vertices(output);
   report.output_faces = num_faces(output);
-  report.seconds_gluing = seconds_since(start);
   return report;
 }
 

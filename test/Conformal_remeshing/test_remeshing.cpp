@@ -188,6 +188,25 @@ TEST(Sizing, AUserFieldSetsTheLengthWhereItIsSmaller)
                              CR::Error_code::INVALID_INPUT, {"chord error"});
 }
 
+TEST(Sizing, ShorterNearThePlacesToMeshAgain)
+{
+  // The field for meshing again where an output intersected itself: the given size at the
+  // places, growing by half the distance to the nearest, never above the user's field.
+  namespace RM = CR::internal::remeshing;
+  std::vector<K::Point_3> places;
+  RM::add_if_far(places, K::Point_3(0., 0., 0.), 0.25);
+  RM::add_if_far(places, K::Point_3(0.2, 0., 0.), 0.25); // within a quarter: the same place
+  RM::add_if_far(places, K::Point_3(4., 0., 0.), 0.25);
+  ASSERT_EQ(places.size(), 2u);
+  const RM::Sizing::Field none, user = [](const K::Point_3& p) { return p.y() > 0. ? 0.1 : 10.; };
+  const RM::Sizing::Field near = RM::shorter_near(none, places, 0.5), both = RM::shorter_near(user, places, 0.5);
+  EXPECT_DOUBLE_EQ(near(K::Point_3(0., 0., 0.)), 0.5);
+  EXPECT_DOUBLE_EQ(near(K::Point_3(4., 0., 1.)), 1.);   // 0.5 + 0.5 * 1 from the second place
+  EXPECT_DOUBLE_EQ(near(K::Point_3(2., 0., 0.)), 1.5);  // halfway: 2 from both
+  EXPECT_DOUBLE_EQ(both(K::Point_3(2., 1., 0.)), 0.1);  // the user's field where it is smaller
+  EXPECT_NEAR(both(K::Point_3(2., -1., 0.)), 0.5 + 0.5 * std::sqrt(5.), 1e-12);
+}
+
 TEST(RemeshConformal, PlanarStageWithExactConstructions)
 {
   // The planar mesher is templated on the kernel: a square with a square hole over Epeck.

@@ -14,6 +14,7 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <map>
 #include <queue>
 #include <utility>
@@ -177,6 +178,29 @@ private:
   double gradation_ = 0.5;
   std::vector<double> vertex_size_; // empty when uniform
 };
+
+/// A size field that is `size` at each of `points` and grows by `gradation` times the distance
+/// to the nearest of them, bounded by `field` where that is given: the sizes for meshing again
+/// near the places where an output intersected itself. (The places are few, a quarter target
+/// apart: see `add_if_far()`.)
+inline Sizing::Field shorter_near(const Sizing::Field& field, const std::vector<Epick::Point_3>& points, double size,
+                                  double gradation = 0.5)
+{
+  return [=](const Epick::Point_3& p) {
+    double nearest = std::numeric_limits<double>::infinity();
+    for(const Epick::Point_3& q : points)
+      nearest = (std::min)(nearest, CGAL::squared_distance(p, q));
+    const double graded = size + gradation * std::sqrt(nearest);
+    return field ? (std::min)(field(p), graded) : graded;
+  };
+}
+
+/// Appends `p` to `points` unless one of them is within `spacing` of it.
+inline void add_if_far(std::vector<Epick::Point_3>& points, const Epick::Point_3& p, double spacing)
+{
+  if(std::none_of(points.begin(), points.end(), [&](const Epick::Point_3& q) { return CGAL::squared_distance(p, q) < spacing * spacing; }))
+    points.push_back(p);
+}
 
 } // namespace remeshing
 } // namespace internal
