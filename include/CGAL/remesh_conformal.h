@@ -892,20 +892,19 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
     // No self-intersection may be created (exact predicates): where the output intersects itself
     // and the input does not, the post-gluing flips and moves are given up first, then the places
     // are meshed again with shorter edges (below).
+    // Each glued mesh is checked once.
     bool intersects = Polygon_mesh_processing::does_self_intersect<ConcurrencyTag>(glued) && !input_self_intersects();
-    if(intersects)
+    if(intersects && report.moves_after_gluing > 0)
     {
-      if(report.moves_after_gluing > 0)
-      {
-        improve_after_gluing(false);
-        glued = glue(triangles);
-      }
-      if(report.flips_after_gluing > 0 && Polygon_mesh_processing::does_self_intersect<ConcurrencyTag>(glued))
-      {
-        flips.undo(triangles);
-        report.flips_after_gluing = 0;
-        glued = glue(triangles);
-      }
+      improve_after_gluing(false);
+      glued = glue(triangles);
+      intersects = Polygon_mesh_processing::does_self_intersect<ConcurrencyTag>(glued);
+    }
+    if(intersects && report.flips_after_gluing > 0)
+    {
+      flips.undo(triangles);
+      report.flips_after_gluing = 0;
+      glued = glue(triangles);
       intersects = Polygon_mesh_processing::does_self_intersect<ConcurrencyTag>(glued);
     }
     report.seconds_gluing += seconds_since(start);

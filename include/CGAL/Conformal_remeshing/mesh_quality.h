@@ -347,6 +347,19 @@ struct Face_sample
   double u, w;
 };
 
+/// The point `p + u (q - p) + w (r - p)` of the segment or triangle whose corners are `c` (`r` is
+/// the last corner: `w` is 0 on a segment).
+template <typename Corners>
+CGAL::Simple_cartesian<double>::Point_3 point_at(const Corners& c, double u, double w)
+{
+  const auto& p = c[0];
+  const auto& q = c[1];
+  const auto& r = c[c.size() - 1];
+  return CGAL::Simple_cartesian<double>::Point_3(p.x() + u * (q.x() - p.x()) + w * (r.x() - p.x()),
+                                                 p.y() + u * (q.y() - p.y()) + w * (r.y() - p.y()),
+                                                 p.z() + u * (q.z() - p.z()) + w * (r.z() - p.z()));
+}
+
 /// Points on `mesh` as `sample_triangle_mesh()` takes them by default: its vertices, as many
 /// random points on its edges (by length) and `samples` random points on its faces (by area);
 /// all drawn from `seed` (CGAL 5.5's sampler draws the points inside each edge and face from the
@@ -388,11 +401,7 @@ sample_points(const TriangleMesh& mesh, std::size_t samples, unsigned int seed,
         u = 1. - u, w = 1. - w;
       if(c.size() == 3 && face_samples != nullptr)
         face_samples->push_back(Face_sample{k, u, w});
-      const Point& p = c[0];
-      const Point& q = c[1];
-      const Point& r = c[c.size() - 1];
-      points.emplace_back(p.x() + u * (q.x() - p.x()) + w * (r.x() - p.x()), p.y() + u * (q.y() - p.y()) + w * (r.y() - p.y()),
-                          p.z() + u * (q.z() - p.z()) + w * (r.z() - p.z()));
+      points.push_back(point_at(c, u, w));
     }
   };
   std::vector<std::array<Point, 2> > segments;
@@ -493,11 +502,7 @@ std::pair<double, std::array<double, 3> > largest_distance_of_samples(const Tria
   for_each_index<Concurrency_tag>(starts.size(), [&](std::size_t s) {
     const Face_sample& start = face_samples[starts[s]];
     const std::array<Fast::Point_3, 3>& t = triangles[start.triangle];
-    const auto at = [&](double u, double w) {
-      return Fast::Point_3(t[0].x() + u * (t[1].x() - t[0].x()) + w * (t[2].x() - t[0].x()),
-                           t[0].y() + u * (t[1].y() - t[0].y()) + w * (t[2].y() - t[0].y()),
-                           t[0].z() + u * (t[1].z() - t[0].z()) + w * (t[2].z() - t[0].z()));
-    };
+    const auto at = [&](double u, double w) { return point_at(t, u, w); };
     double u = start.u, w = start.w;
     Fast::Point_3 best_point = at(u, w), closest = tree.closest_point(best_point);
     double best = CGAL::squared_distance(best_point, closest);

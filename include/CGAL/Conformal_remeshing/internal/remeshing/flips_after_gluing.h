@@ -180,11 +180,10 @@ private:
     if(r.d == r.c || is_edge(r.c, r.d))
       return r;
     const Epick::Point_3 &a = points_[r.a], &b = points_[r.b], &c = points_[r.c], &d = points_[r.d];
-    const auto unit_normal = &Triangle_shape::unit_normal;
-    const Epick::Vector_3 n_t = unit_normal(c, a, b), n_u = unit_normal(d, b, a), mean = n_t + n_u;
+    const Epick::Vector_3 n_t = Triangle_shape::unit_normal(c, a, b), n_u = Triangle_shape::unit_normal(d, b, a), mean = n_t + n_u;
     if(!(CGAL::cross_product(a - c, d - c) * mean > 0.) || !(CGAL::cross_product(d - c, b - c) * mean > 0.))
       return r;
-    if(!(unit_normal(c, a, d) * unit_normal(c, d, b) >= (std::min)(n_t * n_u, cos_bend_)))
+    if(!(Triangle_shape::unit_normal(c, a, d) * Triangle_shape::unit_normal(c, d, b) >= (std::min)(n_t * n_u, cos_bend_)))
       return r;
     const double longest = (std::max)({CGAL::squared_distance(a, b), CGAL::squared_distance(a, c), CGAL::squared_distance(c, b),
                                        CGAL::squared_distance(b, d), CGAL::squared_distance(d, a)});

@@ -126,7 +126,6 @@ inline std::size_t move_points_after_gluing(const Poly_annulus_segmentation& s, 
         star[t[k]].emplace_back(t[(k + 1) % 3], t[(k + 2) % 3]);
   const double cos_target = std::cos(target_degrees * CGAL_PI / 180.), cos_turn = std::cos(30. * CGAL_PI / 180.);
   const double longest_squared = longest_edge * longest_edge;
-  const auto unit_normal = &Triangle_shape::unit_normal;
   std::vector<Poly_annulus_segmentation::Face> visited;
   const std::vector<Point_3> original = points;
   std::size_t moves = 0;
@@ -153,7 +152,7 @@ inline std::size_t move_points_after_gluing(const Poly_annulus_segmentation& s, 
         weight += area;
         centroid = centroid + area * ((p - CGAL::ORIGIN) + (q - CGAL::ORIGIN) + (r - CGAL::ORIGIN)) / 3.;
         normal = normal + n;
-        normals.push_back(unit_normal(p, q, r));
+        normals.push_back(Triangle_shape::unit_normal(p, q, r));
       }
       if(!(weight > 0.) || !(normal.squared_length() > 0.))
         continue;
@@ -169,7 +168,7 @@ inline std::size_t move_points_after_gluing(const Poly_annulus_segmentation& s, 
         for(std::size_t i = 0; i < ring.size(); ++i)
         {
           const Point_3 &q = points[ring[i].first], &r = points[ring[i].second];
-          if(!(unit_normal(x, q, r) * normals[i] >= cos_turn) || Triangle_shape::min_angle_cosine(x, q, r) > limit
+          if(!(Triangle_shape::unit_normal(x, q, r) * normals[i] >= cos_turn) || Triangle_shape::min_angle_cosine(x, q, r) > limit
              || CGAL::squared_distance(x, q) > (std::max)(longest_squared, CGAL::squared_distance(p, q)))
             return refused;
           sum += Triangle_shape::skewness(x, q, r);
