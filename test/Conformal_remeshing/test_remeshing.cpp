@@ -311,57 +311,118 @@ Optimized_mesh_statistics statistics(const std::vector<CGAL::Epick::Point_2>& po
   return s;
 }
 
+// A square with a square hole, refined and smoothed as remesh_conformal() does it, on the wavy
+// surface; the boundary samples are shared with a neighbour (fixed).
+struct Optimization_case
+{
+  RM::Planar_mesh raw;
+  std::vector<CGAL::Epick::Point_2> points;
+  std::vector<CGAL::Epick::Point_3> positions;
+  std::vector<std::array<int, 3> > triangles;
+};
+
+Optimization_case square_with_hole(double size)
+{
+  const std::vector<std::vector<RM::Boundary_sample> > loops{sampled_square(1., 0.05, false), sampled_square(0.3, 0.05, true)};
+  Optimization_case c;
+  c.raw = RM::mesh_planar_domain<CGAL::Epick>(loops, 28., [size](const CGAL::Epick::Point_2&) { return size; }, 3, false);
+  c.points = c.raw.points;
+  c.triangles = c.raw.triangles;
+  for(const auto& p : c.points)
+    c.positions.push_back(wavy_lift(p));
+  return c;
+}
+
+double longest_edge(const std::vector<std::array<int, 3> >& triangles, const std::vector<CGAL::Epick::Point_3>& at)
+{
+  double longest = 0.;
+  for(const auto& t : triangles)
+    for(int c = 0; c < 3; ++c)
+      longest = (std::max)(longest, std::sqrt(CGAL::squared_distance(at[t[c]], at[t[(c + 1) % 3]])));
+  return longest;
+}
+
+// Edges longer than `length` on the surface, each counted once per triangle side (an inner edge
+// twice).
+std::size_t sides_longer_than(double length, const std::vector<std::array<int, 3> >& triangles, const std::vector<CGAL::Epick::Point_3>& at)
+{
+  std::size_t n = 0;
+  for(const auto& t : triangles)
+    for(int c = 0; c < 3; ++c)
+      n += CGAL::squared_distance(at[t[c]], at[t[(c + 1) % 3]]) > length * length;
+  return n;
+}
+
+// What every optimization keeps: the domain exactly covered and unfolded, its boundary and samples,
+// the vertices on the surface, and no angle below the bound that was not there before.
+void expect_domain_and_bounds_kept(const Optimization_case& c, const Optimized_mesh_statistics& before, const Optimized_mesh_statistics& after)
+{
+  EXPECT_TRUE(after.manifold);
+  EXPECT_EQ(after.folded, 0u);
+  EXPECT_NEAR(after.planar_area, 4. - 0.36, 1e-12);
+  EXPECT_EQ(after.boundary_edges, before.boundary_edges);
+  for(std::size_t v = 0; v < c.raw.number_of_samples; ++v)
+    EXPECT_EQ(c.points[v], c.raw.points[v]);
+  for(std::size_t v = 0; v < c.points.size(); ++v)
+    EXPECT_EQ(c.positions[v], wavy_lift(c.points[v]));
+  EXPECT_GE(after.smallest_angle, (std::min)(28., before.smallest_angle) - 1e-9);
+}
+
 } // namespace
 
 TEST(SurfaceOptimization, KeepsTheDomainAndImprovesTheShapesOnTheSurface)
 {
-  // A square with a square hole; the boundary samples are shared with a neighbour (fixed).
-  const std::vector<std::vector<RM::Boundary_sample> > loops{sampled_square(1., 0.05, false), sampled_square(0.3, 0.05, true)};
-  const auto size = [](const CGAL::Epick::Point_2&) { return 0.07; };
-  // Refinement and Laplacian smoothing as remesh_conformal() does them.
-  const RM::Planar_mesh raw = RM::mesh_planar_domain<CGAL::Epick>(loops, 28., size, 3, false);
-  ASSERT_GT(raw.triangles.size(), 1000u);
-  std::vector<CGAL::Epick::Point_2> points = raw.points;
-  std::vector<std::array<int, 3> > triangles = raw.triangles;
-  std::vector<CGAL::Epick::Point_3> positions;
-  for(const auto& p : points)
-    positions.push_back(wavy_lift(p));
-  const Optimized_mesh_statistics before = statistics(points, positions, triangles);
+  Optimization_case c = square_with_hole(0.07);
+  ASSERT_GT(c.raw.triangles.size(), 1000u);
+  const Optimized_mesh_statistics before = statistics(c.points, c.positions, c.triangles);
+  const double longest_before = longest_edge(c.triangles, c.positions);
 
   const RM::Surface_optimization_report report =
-    RM::optimize_on_surface(points, positions, triangles, raw.number_of_samples, wavy_lift_near, 28., 0.07, 5);
+    RM::optimize_on_surface(c.points, c.positions, c.triangles, c.raw.number_of_samples, wavy_lift_near, 28., 0.07, 0., 5);
   EXPECT_TRUE(report.optimized);
   EXPECT_GT(report.flips, 0u);
   EXPECT_GT(report.moves, 0u);
-  ASSERT_EQ(points.size(), raw.points.size());
-  ASSERT_EQ(triangles.size(), raw.triangles.size());
-  const Optimized_mesh_statistics after = statistics(points, positions, triangles);
-  EXPECT_TRUE(after.manifold);
-  EXPECT_EQ(after.folded, 0u);
-  EXPECT_NEAR(after.planar_area, 4. - 0.36, 1e-12); // the same domain, exactly covered
-  EXPECT_EQ(after.boundary_edges, before.boundary_edges);
-  for(std::size_t v = 0; v < raw.number_of_samples; ++v)
-    EXPECT_EQ(points[v], raw.points[v]);
-  for(std::size_t v = 0; v < points.size(); ++v)
-    EXPECT_EQ(positions[v], wavy_lift(points[v])); // kept on the surface
-  EXPECT_GE(after.smallest_angle, (std::min)(28., before.smallest_angle) - 1e-9);
+  EXPECT_EQ(report.splits, 0u);
+  ASSERT_EQ(c.points.size(), c.raw.points.size());
+  ASSERT_EQ(c.triangles.size(), c.raw.triangles.size());
+  const Optimized_mesh_statistics after = statistics(c.points, c.positions, c.triangles);
+  expect_domain_and_bounds_kept(c, before, after);
   // No edge on the surface longer than the bound given (0.07), or than the longest one before.
-  const auto longest_edge = [&](const std::vector<std::array<int, 3> >& mesh, const std::vector<CGAL::Epick::Point_3>& at) {
-    double longest = 0.;
-    for(const auto& t : mesh)
-      for(int c = 0; c < 3; ++c)
-        longest = (std::max)(longest, std::sqrt(CGAL::squared_distance(at[t[c]], at[t[(c + 1) % 3]])));
-    return longest;
-  };
-  std::vector<CGAL::Epick::Point_3> raw_positions;
-  for(const auto& p : raw.points)
-    raw_positions.push_back(wavy_lift(p));
-  EXPECT_LE(longest_edge(triangles, positions), (std::max)(0.07, longest_edge(raw.triangles, raw_positions)) * (1. + 1e-12));
+  EXPECT_LE(longest_edge(c.triangles, c.positions), (std::max)(0.07, longest_before) * (1. + 1e-12));
   EXPECT_GT(after.regular, before.regular);
   EXPECT_LT(after.mean_skewness, before.mean_skewness - 0.02);
   // Issue #5's bar of 0.12 is for whole remeshings (checked in remeshing_checks.h); on this small
   // domain a large share of the triangles touch the fixed boundary samples.
   EXPECT_LT(after.mean_skewness, 0.125);
+}
+
+TEST(SurfaceOptimization, SplitsTheLongInnerEdgesAndKeepsTheEdgesShorterAfterwards)
+{
+  // Refined to 0.07 as above; without splits, the optimization leaves edges up to 0.07 long.
+  Optimization_case plain = square_with_hole(0.07), split = square_with_hole(0.07);
+  const double split_length = 0.064; // about 1.28 / 1.4 of the longest edge bound, as remesh_conformal() splits
+  RM::optimize_on_surface(plain.points, plain.positions, plain.triangles, plain.raw.number_of_samples, wavy_lift_near, 28., 0.07, 0., 5);
+  const std::size_t long_without_splits = sides_longer_than(split_length, plain.triangles, plain.positions);
+  ASSERT_GT(long_without_splits, 100u);
+
+  const Optimized_mesh_statistics before = statistics(split.points, split.positions, split.triangles);
+  const RM::Surface_optimization_report report = RM::optimize_on_surface(
+    split.points, split.positions, split.triangles, split.raw.number_of_samples, wavy_lift_near, 28., 0.07, split_length, 5);
+  EXPECT_TRUE(report.optimized);
+  EXPECT_GT(report.splits, 0u);
+  // Each split adds one vertex and two triangles.
+  EXPECT_EQ(split.points.size(), split.raw.points.size() + report.splits);
+  EXPECT_EQ(split.triangles.size(), split.raw.triangles.size() + 2 * report.splits);
+  const Optimized_mesh_statistics after = statistics(split.points, split.positions, split.triangles);
+  expect_domain_and_bounds_kept(split, before, after);
+  const std::size_t long_with_splits = sides_longer_than(split_length, split.triangles, split.positions);
+  std::cout << "sides longer than the split length: " << long_without_splits << " without splits, " << long_with_splits
+            << " with " << report.splits << " splits" << std::endl;
+  EXPECT_LT(long_with_splits, long_without_splits / 10);
+  EXPECT_LE(longest_edge(split.triangles, split.positions), longest_edge(plain.triangles, plain.positions) * (1. + 1e-12));
+  // The new vertices' valence-4 stars are flipped and smoothed out.
+  EXPECT_LT(after.mean_skewness, before.mean_skewness - 0.02);
+  EXPECT_LT(after.mean_skewness, statistics(plain.points, plain.positions, plain.triangles).mean_skewness + 0.005);
 }
 
 TEST(RemeshConformal, LocationsInSliversAreExact)
@@ -689,7 +750,7 @@ TEST(SurfaceOptimization, LeavesANonManifoldInputAsIs)
     positions.push_back(wavy_lift(p));
   const auto points_before = points;
   const auto triangles_before = triangles;
-  EXPECT_FALSE(RM::optimize_on_surface(points, positions, triangles, 0, wavy_lift_near, 28., 1., 3).optimized);
+  EXPECT_FALSE(RM::optimize_on_surface(points, positions, triangles, 0, wavy_lift_near, 28., 1., 0.9, 3).optimized);
   EXPECT_EQ(points, points_before);
   EXPECT_EQ(triangles, triangles_before);
 }

@@ -37,6 +37,7 @@ struct Surface_optimization_report
   std::size_t flips = 0;
   std::size_t moves = 0;
   std::size_t angle_changes = 0; ///< flips and moves of the angle passes
+  std::size_t splits = 0;        ///< edges split (see `Surface_mesh_optimizer::split_pass()`)
 };
 
 /// Shape measures of a triangle in space.
@@ -299,6 +300,45 @@ public:
         settled_[v] |= SKEWNESS;
     }
     return moves;
+  }
+
+  /// Splits every interior edge longer than `split_length` on the surface at its planar midpoint
+  /// (lifted by the map), when the four triangles it makes are positively oriented in the plane
+  /// (exact predicate) and keep the angle bound on the surface; from then on, the longest edge
+  /// bound of the flips and moves is `split_length` if that is smaller. The refinement leaves
+  /// sparse clusters of nearly equilateral triangles with edges just under its bound, around
+  /// vertices of valence 7; shapes are good there, so no flip or move touches them, but they stand
+  /// farthest from a curved input (the chord error grows like the square of the circumradius).
+  /// Returns the number of splits; the new vertices have valence 4, for the flip passes that follow.
+  std::size_t split_pass(double split_length)
+  {
+    const double split_squared = split_length * split_length;
+    longest_squared_ = (std::min)(longest_squared_, split_squared);
+    std::size_t splits = 0;
+    for(int t = 0; t < int(triangles_.size()); ++t)
+      for(int k = 0; k < 3; ++k)
+      {
+        const int u = neighbor_[t][k];
+        if(u < 0)
+          continue;
+        const int c = vertex(t, k), a = vertex(t, k + 1), b = vertex(t, k + 2), j = opposite_corner(u, t), d = vertex(u, j);
+        if(!(CGAL::squared_distance(positions_[a], positions_[b]) > split_squared) || shares_a_sample_image(a, b, c, d))
+          continue;
+        const Point_2 m = CGAL::midpoint(points_[a], points_[b]);
+        if(CGAL::orientation(points_[c], points_[a], m) != CGAL::POSITIVE || CGAL::orientation(points_[c], m, points_[b]) != CGAL::POSITIVE
+           || CGAL::orientation(points_[d], points_[b], m) != CGAL::POSITIVE || CGAL::orientation(points_[d], m, points_[a]) != CGAL::POSITIVE)
+          continue;
+        const Point_3 x = lift_(m, points_[a]);
+        const Point_3 &pa = positions_[a], &pb = positions_[b], &pc = positions_[c], &pd = positions_[d];
+        const double old_worst = (std::max)(Triangle_shape::min_angle_cosine(pc, pa, pb), Triangle_shape::min_angle_cosine(pd, pb, pa));
+        const double new_worst = (std::max)({Triangle_shape::min_angle_cosine(pc, pa, x), Triangle_shape::min_angle_cosine(pc, x, pb),
+                                             Triangle_shape::min_angle_cosine(pd, pb, x), Triangle_shape::min_angle_cosine(pd, x, pa)});
+        if(new_worst > (std::max)(old_worst, cos_bound_))
+          continue;
+        split(t, k, u, j, m, x);
+        ++splits;
+      }
+    return splits;
   }
 
   /// Raises the smallest surface angles below `target_degrees`: every interior edge of a
@@ -577,6 +617,53 @@ private:
       unsettle(v);
   }
 
+  // Whether two of the vertices are images of one sample (the sides of a slit): a vertex inside
+  // their quad would be joined to both.
+  bool shares_a_sample_image(int a, int b, int c, int d) const
+  {
+    std::vector<std::size_t> ids;
+    for(int v : {a, b, c, d})
+      if(std::size_t(v) < sample_ids_.size())
+        ids.push_back(sample_ids_[std::size_t(v)]);
+    std::sort(ids.begin(), ids.end());
+    return std::adjacent_find(ids.begin(), ids.end()) != ids.end();
+  }
+
+  // Splits the edge opposite corner k of t, shared with corner j of u, at the new vertex m
+  // (planar point `p`, surface point `x`): (c, a, b) and (d, b, a) become (c, a, m), (c, m, b),
+  // (d, b, m) and (d, m, a).
+  void split(int t, int k, int u, int j, const Point_2& p, const Point_3& x)
+  {
+    const int c = vertex(t, k), a = vertex(t, k + 1), b = vertex(t, k + 2), d = vertex(u, j);
+    const int n_ca = neighbor_[t][(k + 2) % 3], n_bc = neighbor_[t][(k + 1) % 3];
+    const int n_ad = neighbor_[u][(j + 1) % 3], n_db = neighbor_[u][(j + 2) % 3];
+    const int m = int(points_.size()), t2 = int(triangles_.size()), u2 = t2 + 1;
+    points_.push_back(p);
+    positions_.push_back(x);
+    fixed_.push_back(0);
+    settled_.push_back(0);
+    valence_.push_back(4);
+    target_.push_back(6);
+    incident_.push_back(t);
+    triangles_[t] = {{c, a, m}};
+    neighbor_[t] = {{u2, t2, n_ca}};
+    triangles_.push_back({{c, m, b}});
+    neighbor_.push_back({{u, n_bc, t}});
+    triangles_[u] = {{d, b, m}};
+    neighbor_[u] = {{t2, u2, n_db}};
+    triangles_.push_back({{d, m, a}});
+    neighbor_.push_back({{t, n_ad, u}});
+    relink(n_bc, t, t2);
+    relink(n_ad, u, u2);
+    incident_[a] = incident_[c] = t;
+    incident_[b] = t2;
+    incident_[d] = u;
+    ++valence_[c];
+    ++valence_[d];
+    for(int v : {a, b, c, d})
+      unsettle(v);
+  }
+
   void relink(int w, int from, int to)
   {
     if(w < 0)
@@ -590,7 +677,8 @@ private:
   std::vector<Point_3>& positions_;
   std::vector<std::array<int, 3> >& triangles_;
   const Lift& lift_;
-  const double cos_bound_, longest_squared_;
+  const double cos_bound_;
+  double longest_squared_;
   std::vector<std::array<int, 3> > neighbor_;
   std::vector<int> incident_, valence_, target_;
   std::vector<char> fixed_;
@@ -600,9 +688,12 @@ private:
 };
 
 /// Optimizes a patch's remeshing: `rounds` rounds of valence-driven edge flips and smoothing
-/// passes, then skewness passes and angle passes toward 30 degrees (see `Surface_mesh_optimizer`). `points` and `triangles` are
-/// the planar mesh (counterclockwise triangles of a manifold domain), `positions` the surface
-/// points of its vertices and `lift` the plane-to-surface map. Boundary vertices and the first
+/// passes; then, when `split_length` is positive, a split of the interior edges longer than it
+/// on the surface and two more rounds, after which no flip or move makes an edge longer than
+/// `split_length` (unless it replaces a longer one); then skewness passes and angle passes
+/// toward 30 degrees (see `Surface_mesh_optimizer`). `points` and `triangles` are the planar
+/// mesh (counterclockwise triangles of a manifold domain), `positions` the surface points of its
+/// vertices (the splits' new vertices are appended to both) and `lift` the plane-to-surface map. Boundary vertices and the first
 /// `number_of_fixed_points` points never move and boundary edges are never flipped, so the
 /// domain and its boundary samples are kept; every triangle stays positively oriented in the
 /// plane (exact predicates); no operation creates a surface angle below the smaller of
@@ -611,7 +702,7 @@ private:
 template <typename Lift>
 Surface_optimization_report optimize_on_surface(std::vector<Epick::Point_2>& points, std::vector<Epick::Point_3>& positions,
                                                 std::vector<std::array<int, 3> >& triangles, std::size_t number_of_fixed_points,
-                                                const Lift& lift, double angle_bound_degrees, double longest_edge, int rounds,
+                                                const Lift& lift, double angle_bound_degrees, double longest_edge, double split_length, int rounds,
                                                 const std::vector<std::size_t>& sample_ids = {},
                                                 const std::set<std::pair<std::size_t, std::size_t> >& forbidden_diagonals = {})
 {
@@ -625,12 +716,19 @@ Surface_optimization_report optimize_on_surface(std::vector<Epick::Point_2>& poi
   // Each round: valence flips, then flips that improve shapes without hurting valences, then two
   // smoothing passes; the skewness passes at the end polish what smoothing leaves. (Measured on
   // CGAL's CAD-like models: rounds beyond 5 and a lower skewness threshold gain < 0.003.)
-  for(int round = 0; round < rounds; ++round)
-  {
+  const auto flip_and_smooth = [&]() {
     report.flips += optimizer.flip_pass(Surface_mesh_optimizer<Lift>::VALENCE);
     report.flips += optimizer.flip_pass(Surface_mesh_optimizer<Lift>::SHAPE);
     report.moves += optimizer.smoothing_pass();
     report.moves += optimizer.smoothing_pass();
+  };
+  for(int round = 0; round < rounds; ++round)
+    flip_and_smooth();
+  if(split_length > 0.)
+  {
+    report.splits = optimizer.split_pass(split_length);
+    for(int round = 0; round < 2; ++round)
+      flip_and_smooth();
   }
   for(int pass = 0; pass < 3; ++pass)
     report.moves += optimizer.skewness_pass(0.12);
