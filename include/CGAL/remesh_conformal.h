@@ -511,6 +511,120 @@ inline std::string describe_glue_defect(const std::vector<std::array<std::size_t
   return "no defect found (internal error)";
 }
 
+// The boundary samples shared by the patches, and each patch remeshed on them.
+struct Meshed_patches
+{
+  Curve_samples samples;
+  std::vector<Remeshed_patch> remeshed;
+};
+
+// Every patch meshed and pulled back on boundary samples shared with its neighbours.
+// A patch thinner than the sample spacing can have a boundary chord that crosses its other side
+// in the plane (see `check_glue()`): the curves of such chords are sampled twice as densely and
+// every patch is meshed again (resampling renumbers the samples), up to `max_halvings` times.
+// Where two patches join the same two samples by a diagonal (both flattenings nearly straight
+// along a short curve between junctions), all but the first of them split it and are meshed
+// again; splitting adds no edge between samples, so this ends unless smoothing brings new ones.
+template <typename ConcurrencyTag, typename Progress>
+Meshed_patches mesh_patches_on_shared_samples(const Poly_annulus_segmentation& segmentation,
+                                              const std::vector<Extracted_patch>& patches,
+                                              const std::vector<Conformal_flattening>& flattenings,
+                                              std::vector<std::vector<double> >& scales, const Sizing& sizing, double corner,
+                                              double min_angle, int smoothing, int optimization_rounds,
+                                              const Time_limit& time_limit, const Progress& progress, Remeshing_report& report)
+{
+  Meshed_patches result;
+  Curve_samples& samples = result.samples;
+  std::vector<Remeshed_patch>& remeshed = result.remeshed;
+  remeshed.resize(patches.size());
+  const int max_halvings = 6, max_diagonal_rounds = 4;
+  std::vector<int> halvings;
+  std::vector<std::set<std::pair<std::size_t, std::size_t> > > diagonals_to_split;
+  std::vector<std::size_t> to_mesh;
+  std::vector<std::string> failures;
+  bool resample = true;
+  for(int diagonal_round = 0;;)
+  {
+    if(resample)
+    {
+      samples = sample_boundary_curves(segmentation, sizing, corner, halvings);
+      halvings.resize(samples.number_of_curves, 0);
+      diagonals_to_split.assign(patches.size(), {});
+      to_mesh.resize(patches.size());
+      std::iota(to_mesh.begin(), to_mesh.end(), std::size_t(0));
+    }
+    failures.assign(patches.size(), std::string());
+    Conformal_remeshing::internal::for_each_index<ConcurrencyTag>(to_mesh.size(), [&](std::size_t i) {
+      const std::size_t p = to_mesh[i];
+      try
+      {
+        time_limit.check("while meshing the patches");
+        if(scales[p].empty()) // a patch may be meshed again (denser curves, split diagonals)
+          scales[p] = local_scale(flattenings[p]);
+        remeshed[p] = remesh_flattened_patch(flattenings[p], scales[p], patches[p], samples, sizing, min_angle,
+                                                                  smoothing, optimization_rounds, diagonals_to_split[p]);
+      }
+      catch(const Error& e)
+      {
+        failures[p] = e.what();
+      }
+    });
+    time_limit.check("while meshing the patches");
+    for(std::size_t p = 0; p < patches.size(); ++p)
+      if(!failures[p].empty())
+        throw Error(Error_code::NOT_AN_EMBEDDING, "remesh_conformal: patch " + std::to_string(p) + ": " + failures[p]);
+
+    std::set<std::size_t> curves_to_refine;
+    std::size_t first_failing = patches.size();
+    for(std::size_t p = 0; p < patches.size(); ++p)
+      for(const auto& chord : remeshed[p].chords_not_glued)
+      {
+        first_failing = (std::min)(first_failing, p);
+        curves_to_refine.insert(samples.curve_of_chord.at(chord));
+      }
+    resample = !curves_to_refine.empty();
+    if(resample)
+    {
+      const bool refinable = std::all_of(curves_to_refine.begin(), curves_to_refine.end(),
+                                         [&](std::size_t c) { return halvings[c] < max_halvings; });
+      if(!refinable)
+        throw Error(Error_code::NOT_AN_EMBEDDING,
+                    "remesh_conformal: patch " + std::to_string(first_failing) + ": its planar mesh does not glue to its neighbours at "
+                      + std::to_string(remeshed[first_failing].chords_not_glued.size())
+                      + " boundary chords (not triangle edges in the loop's direction, or joined twice) even with boundary samples "
+                      + std::to_string(1 << max_halvings) + " times denser");
+      progress("sampling " + std::to_string(curves_to_refine.size()) + " boundary curves of thin patches more densely");
+      for(std::size_t c : curves_to_refine)
+        ++halvings[c];
+      report.refined_boundary_curves += curves_to_refine.size();
+      continue;
+    }
+
+    std::map<std::pair<std::size_t, std::size_t>, std::vector<std::size_t> > patches_of_diagonal;
+    for(std::size_t p = 0; p < patches.size(); ++p)
+      for(const auto& diagonal : remeshed[p].sample_diagonals)
+        patches_of_diagonal[diagonal].push_back(p);
+    std::set<std::size_t> to_split;
+    for(const auto& d : patches_of_diagonal)
+      for(std::size_t i = 1; i < d.second.size(); ++i)
+      {
+        diagonals_to_split[d.second[i]].insert(d.first);
+        to_split.insert(d.second[i]);
+      }
+    if(to_split.empty())
+      break;
+    if(++diagonal_round > max_diagonal_rounds)
+      throw Error(Error_code::NOT_AN_EMBEDDING, "remesh_conformal: patch " + std::to_string(*to_split.begin())
+                                                  + " still joins two boundary samples that another triangle edge joins "
+                                                  "(four triangles on one edge) after "
+                                                  + std::to_string(max_diagonal_rounds) + " rounds of splitting such diagonals");
+    progress("splitting diagonals shared by " + std::to_string(to_split.size() + 1) + " patches or more");
+    report.split_diagonals += to_split.size();
+    to_mesh.assign(to_split.begin(), to_split.end());
+  }
+  return result;
+}
+
 } // namespace remeshing
 } // namespace internal
 
@@ -713,104 +827,15 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
     // --- shared boundary samples, then every patch meshed and pulled back -----------------------
     start = Clock::now();
     progress("meshing " + std::to_string(patches.size()) + " patches");
-    // A patch thinner than the sample spacing can have a boundary chord that crosses its other side
-    // in the plane (see `check_glue()`): the curves of such chords are sampled twice as densely and
-    // every patch is meshed again (resampling renumbers the samples), up to `max_halvings` times.
-    // Where two patches join the same two samples by a diagonal (both flattenings nearly straight
-    // along a short curve between junctions), all but the first of them split it and are meshed
-    // again; splitting adds no edge between samples, so this ends unless smoothing brings new ones.
     // Near the places where an earlier round's output intersected itself, the edges are shorter.
     const internal::remeshing::Sizing sizing(segmentation, h,
                                              crossings.empty() ? sizing_field
                                                                : internal::remeshing::shorter_near(sizing_field, crossings, h / double(1 << refinement)),
                                              chord_error);
-    const int max_halvings = 6, max_diagonal_rounds = 4;
-    std::vector<int> halvings;
-    internal::remeshing::Curve_samples samples;
-    std::vector<internal::remeshing::Remeshed_patch> remeshed(patches.size());
-    std::vector<std::set<std::pair<std::size_t, std::size_t> > > diagonals_to_split;
-    std::vector<std::size_t> to_mesh;
-    std::vector<std::string> failures;
-    bool resample = true;
-    for(int diagonal_round = 0;;)
-    {
-      if(resample)
-      {
-        samples = internal::remeshing::sample_boundary_curves(segmentation, sizing, corner, halvings);
-        halvings.resize(samples.number_of_curves, 0);
-        diagonals_to_split.assign(patches.size(), {});
-        to_mesh.resize(patches.size());
-        std::iota(to_mesh.begin(), to_mesh.end(), std::size_t(0));
-      }
-      failures.assign(patches.size(), std::string());
-      Conformal_remeshing::internal::for_each_index<ConcurrencyTag>(to_mesh.size(), [&](std::size_t i) {
-        const std::size_t p = to_mesh[i];
-        try
-        {
-          time_limit.check("while meshing the patches");
-          if(scales[p].empty()) // a patch may be meshed again (denser curves, split diagonals)
-            scales[p] = internal::remeshing::local_scale(flattenings[p]);
-          remeshed[p] = internal::remeshing::remesh_flattened_patch(flattenings[p], scales[p], patches[p], samples, sizing, min_angle,
-                                                                    smoothing, optimization_rounds, diagonals_to_split[p]);
-        }
-        catch(const Error& e)
-        {
-          failures[p] = e.what();
-        }
-      });
-      time_limit.check("while meshing the patches");
-      for(std::size_t p = 0; p < patches.size(); ++p)
-        if(!failures[p].empty())
-          throw Error(Error_code::NOT_AN_EMBEDDING, "remesh_conformal: patch " + std::to_string(p) + ": " + failures[p]);
-
-      std::set<std::size_t> curves_to_refine;
-      std::size_t first_failing = patches.size();
-      for(std::size_t p = 0; p < patches.size(); ++p)
-        for(const auto& chord : remeshed[p].chords_not_glued)
-        {
-          first_failing = (std::min)(first_failing, p);
-          curves_to_refine.insert(samples.curve_of_chord.at(chord));
-        }
-      resample = !curves_to_refine.empty();
-      if(resample)
-      {
-        const bool refinable = std::all_of(curves_to_refine.begin(), curves_to_refine.end(),
-                                           [&](std::size_t c) { return halvings[c] < max_halvings; });
-        if(!refinable)
-          throw Error(Error_code::NOT_AN_EMBEDDING,
-                      "remesh_conformal: patch " + std::to_string(first_failing) + ": its planar mesh does not glue to its neighbours at "
-                        + std::to_string(remeshed[first_failing].chords_not_glued.size())
-                        + " boundary chords (not triangle edges in the loop's direction, or joined twice) even with boundary samples "
-                        + std::to_string(1 << max_halvings) + " times denser");
-        progress("sampling " + std::to_string(curves_to_refine.size()) + " boundary curves of thin patches more densely");
-        for(std::size_t c : curves_to_refine)
-          ++halvings[c];
-        report.refined_boundary_curves += curves_to_refine.size();
-        continue;
-      }
-
-      std::map<std::pair<std::size_t, std::size_t>, std::vector<std::size_t> > patches_of_diagonal;
-      for(std::size_t p = 0; p < patches.size(); ++p)
-        for(const auto& diagonal : remeshed[p].sample_diagonals)
-          patches_of_diagonal[diagonal].push_back(p);
-      std::set<std::size_t> to_split;
-      for(const auto& d : patches_of_diagonal)
-        for(std::size_t i = 1; i < d.second.size(); ++i)
-        {
-          diagonals_to_split[d.second[i]].insert(d.first);
-          to_split.insert(d.second[i]);
-        }
-      if(to_split.empty())
-        break;
-      if(++diagonal_round > max_diagonal_rounds)
-        throw Error(Error_code::NOT_AN_EMBEDDING, "remesh_conformal: patch " + std::to_string(*to_split.begin())
-                                                    + " still joins two boundary samples that another triangle edge joins "
-                                                    "(four triangles on one edge) after "
-                                                    + std::to_string(max_diagonal_rounds) + " rounds of splitting such diagonals");
-      progress("splitting diagonals shared by " + std::to_string(to_split.size() + 1) + " patches or more");
-      report.split_diagonals += to_split.size();
-      to_mesh.assign(to_split.begin(), to_split.end());
-    }
+    const internal::remeshing::Meshed_patches meshed = internal::remeshing::mesh_patches_on_shared_samples<ConcurrencyTag>(
+      segmentation, patches, flattenings, scales, sizing, corner, min_angle, smoothing, optimization_rounds, time_limit, progress, report);
+    const internal::remeshing::Curve_samples& samples = meshed.samples;
+    const std::vector<internal::remeshing::Remeshed_patch>& remeshed = meshed.remeshed;
     report.boundary_samples = samples.points.size();
     report.boundary_curves = samples.number_of_curves;
     report.seconds_meshing_stage += seconds_since(start);
@@ -961,9 +986,9 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
       std::ostringstream where;
       if(!intersecting.empty())
       {
-      const Epick::Point_3 c = centroid(intersecting.front().first);
-      where << " near (" << c.x() << ", " << c.y() << ", " << c.z() << ")";
-    }
+        const Epick::Point_3 c = centroid(intersecting.front().first);
+        where << " near (" << c.x() << ", " << c.y() << ", " << c.z() << ")";
+      }
       throw Error(Error_code::NOT_AN_EMBEDDING,
                   "remesh_conformal: the remeshed patches intersect each other" + where.str()
                   + ", where the input does not intersect itself, even with edges of 1/" + std::to_string(1 << max_refinements)

@@ -333,7 +333,7 @@ public:
         const double old_worst = (std::max)(Triangle_shape::min_angle_cosine(pc, pa, pb), Triangle_shape::min_angle_cosine(pd, pb, pa));
         const double new_worst = (std::max)({Triangle_shape::min_angle_cosine(pc, pa, x), Triangle_shape::min_angle_cosine(pc, x, pb),
                                              Triangle_shape::min_angle_cosine(pd, pb, x), Triangle_shape::min_angle_cosine(pd, x, pa)});
-        if(new_worst > (std::max)(old_worst, cos_bound_))
+        if(!keeps_angle_bound(old_worst, new_worst))
           continue;
         split(t, k, u, j, m, x);
         ++splits;
@@ -486,9 +486,15 @@ private:
   // smaller of the bound and the smallest angle before.
   bool keeps_angle_bound(const Point_3& pa, const Point_3& pb, const Point_3& pc, const Point_3& pd) const
   {
-    const double old_worst = (std::max)(Triangle_shape::min_angle_cosine(pc, pa, pb), Triangle_shape::min_angle_cosine(pd, pb, pa));
-    const double new_worst = (std::max)(Triangle_shape::min_angle_cosine(pc, pa, pd), Triangle_shape::min_angle_cosine(pc, pd, pb));
-    return new_worst <= (std::max)(old_worst, cos_bound_);
+    return keeps_angle_bound((std::max)(Triangle_shape::min_angle_cosine(pc, pa, pb), Triangle_shape::min_angle_cosine(pd, pb, pa)),
+                             (std::max)(Triangle_shape::min_angle_cosine(pc, pa, pd), Triangle_shape::min_angle_cosine(pc, pd, pb)));
+  }
+
+  // The same rule for any operation, given the cosines of the smallest angles of the triangles it
+  // replaces and of those it makes (the largest of each).
+  bool keeps_angle_bound(double old_worst_cosine, double new_worst_cosine) const
+  {
+    return new_worst_cosine <= (std::max)(old_worst_cosine, cos_bound_);
   }
 
   int vertex(int t, int k) const { return triangles_[t][k % 3]; }
