@@ -103,7 +103,10 @@ struct Remeshing_report
   /// vertex moves on the glued mesh: samples of the cuts between patches and their neighbours,
   /// moved on the input surface for shape (none if the output intersects itself with them)
   std::size_t moves_after_gluing = 0;
-  /// rounds of meshing again with shorter edges where the output intersected itself (0 to 3)
+  /// rounds of meshing again with shorter edges where the output intersected itself (0 to 3).
+  /// The counts of the patches' meshing (`refined_boundary_curves`, `split_diagonals`,
+  /// `clamped_vertices`, `optimization_flips`, `optimization_splits`) and the seconds add up over
+  /// all rounds; `flips_after_gluing` and `moves_after_gluing` are those of the output.
   std::size_t self_intersection_refinements = 0;
   /// wall-clock seconds of the stages (the flattening and meshing stages run patches in parallel)
   double seconds_segmentation = 0., seconds_flattening = 0., seconds_meshing_stage = 0., seconds_gluing = 0.;
