@@ -319,18 +319,29 @@ struct Optimization_case
   std::vector<CGAL::Epick::Point_2> points;
   std::vector<CGAL::Epick::Point_3> positions;
   std::vector<std::array<int, 3> > triangles;
+  std::function<CGAL::Epick::Point_3(const CGAL::Epick::Point_2&)> lift;
+  // as the optimizer calls it
+  CGAL::Epick::Point_3 operator()(const CGAL::Epick::Point_2& p, const CGAL::Epick::Point_2&) const { return lift(p); }
 };
 
-Optimization_case square_with_hole(double size)
+Optimization_case square_with_hole(double size, std::function<CGAL::Epick::Point_3(const CGAL::Epick::Point_2&)> lift = wavy_lift)
 {
   const std::vector<std::vector<RM::Boundary_sample> > loops{sampled_square(1., 0.05, false), sampled_square(0.3, 0.05, true)};
   Optimization_case c;
   c.raw = RM::mesh_planar_domain<CGAL::Epick>(loops, 28., [size](const CGAL::Epick::Point_2&) { return size; }, 3, false);
   c.points = c.raw.points;
   c.triangles = c.raw.triangles;
+  c.lift = lift;
   for(const auto& p : c.points)
-    c.positions.push_back(wavy_lift(p));
+    c.positions.push_back(lift(p));
   return c;
+}
+
+RM::Edge_split_bounds longer_than(double length)
+{
+  RM::Edge_split_bounds bounds;
+  bounds.longest = length;
+  return bounds;
 }
 
 double longest_edge(const std::vector<std::array<int, 3> >& triangles, const std::vector<CGAL::Epick::Point_3>& at)
@@ -364,7 +375,7 @@ void expect_domain_and_bounds_kept(const Optimization_case& c, const Optimized_m
   for(std::size_t v = 0; v < c.raw.number_of_samples; ++v)
     EXPECT_EQ(c.points[v], c.raw.points[v]);
   for(std::size_t v = 0; v < c.points.size(); ++v)
-    EXPECT_EQ(c.positions[v], wavy_lift(c.points[v]));
+    EXPECT_EQ(c.positions[v], c.lift(c.points[v]));
   EXPECT_GE(after.smallest_angle, (std::min)(28., before.smallest_angle) - 1e-9);
 }
 
@@ -378,7 +389,7 @@ TEST(SurfaceOptimization, KeepsTheDomainAndImprovesTheShapesOnTheSurface)
   const double longest_before = longest_edge(c.triangles, c.positions);
 
   const RM::Surface_optimization_report report =
-    RM::optimize_on_surface(c.points, c.positions, c.triangles, c.raw.number_of_samples, wavy_lift_near, 28., 0.07, 0., 5);
+    RM::optimize_on_surface(c.points, c.positions, c.triangles, c.raw.number_of_samples, c, 28., 0.07, RM::Edge_split_bounds(), 5);
   EXPECT_TRUE(report.optimized);
   EXPECT_GT(report.flips, 0u);
   EXPECT_GT(report.moves, 0u);
@@ -401,15 +412,16 @@ TEST(SurfaceOptimization, SplitsTheLongInnerEdgesAndKeepsTheEdgesShorterAfterwar
   // Refined to 0.07 as above; without splits, the optimization leaves edges up to 0.07 long.
   Optimization_case plain = square_with_hole(0.07), split = square_with_hole(0.07);
   const double split_length = 0.064; // about 1.28 / 1.4 of the longest edge bound, as remesh_conformal() splits
-  RM::optimize_on_surface(plain.points, plain.positions, plain.triangles, plain.raw.number_of_samples, wavy_lift_near, 28., 0.07, 0., 5);
+  RM::optimize_on_surface(plain.points, plain.positions, plain.triangles, plain.raw.number_of_samples, plain, 28., 0.07, RM::Edge_split_bounds(), 5);
   const std::size_t long_without_splits = sides_longer_than(split_length, plain.triangles, plain.positions);
   ASSERT_GT(long_without_splits, 100u);
 
   const Optimized_mesh_statistics before = statistics(split.points, split.positions, split.triangles);
   const RM::Surface_optimization_report report = RM::optimize_on_surface(
-    split.points, split.positions, split.triangles, split.raw.number_of_samples, wavy_lift_near, 28., 0.07, split_length, 5);
+    split.points, split.positions, split.triangles, split.raw.number_of_samples, split, 28., 0.07, longer_than(split_length), 5);
   EXPECT_TRUE(report.optimized);
   EXPECT_GT(report.splits, 0u);
+  EXPECT_EQ(report.chord_splits, 0u);
   // Each split adds one vertex and two triangles.
   EXPECT_EQ(split.points.size(), split.raw.points.size() + report.splits);
   EXPECT_EQ(split.triangles.size(), split.raw.triangles.size() + 2 * report.splits);
@@ -423,6 +435,76 @@ TEST(SurfaceOptimization, SplitsTheLongInnerEdgesAndKeepsTheEdgesShorterAfterwar
   // The new vertices' valence-4 stars are flipped and smoothed out.
   EXPECT_LT(after.mean_skewness, before.mean_skewness - 0.02);
   EXPECT_LT(after.mean_skewness, statistics(plain.points, plain.positions, plain.triangles).mean_skewness + 0.005);
+}
+
+namespace {
+
+// A surface folded at right angles (slopes of -1 and 1) along the lines x = 0.2 k, and how far
+// the chords of the inner edges at least `shortest` long cut under its creases: the distance
+// from each chord's midpoint to the surface point of the planar midpoint.
+CGAL::Epick::Point_3 creased_lift(const CGAL::Epick::Point_2& p)
+{
+  return CGAL::Epick::Point_3(p.x(), p.y(), std::abs(p.x() - 0.4 * std::round(p.x() / 0.4)));
+}
+
+std::vector<double> chord_gaps(const Optimization_case& c, double shortest)
+{
+  std::map<std::pair<int, int>, int> sides;
+  for(const auto& t : c.triangles)
+    for(int k = 0; k < 3; ++k)
+      ++sides[std::minmax(t[k], t[(k + 1) % 3])];
+  std::vector<double> gaps;
+  for(const auto& side : sides)
+  {
+    const int a = side.first.first, b = side.first.second;
+    if(side.second == 2 && CGAL::squared_distance(c.positions[a], c.positions[b]) >= shortest * shortest)
+      gaps.push_back(std::sqrt(CGAL::squared_distance(CGAL::midpoint(c.positions[a], c.positions[b]),
+                                                      c.lift(CGAL::midpoint(c.points[a], c.points[b])))));
+  }
+  return gaps;
+}
+
+} // namespace
+
+TEST(SurfaceOptimization, SplitsTheEdgesThatCutUnderABend)
+{
+  // Refined to h = 0.07 in the plane and optimized as remesh_conformal() does before its splits.
+  const double h = 0.07, bound = 0.15 * h, shortest = 0.9 * h;
+  Optimization_case c = square_with_hole(h, creased_lift);
+  typedef RM::Surface_mesh_optimizer<Optimization_case> Optimizer;
+  Optimizer optimizer(c.points, c.positions, c.triangles, c, 28., 1.4 * h);
+  ASSERT_TRUE(optimizer.initialize(c.raw.number_of_samples));
+  for(int round = 0; round < 5; ++round)
+  {
+    optimizer.flip_pass(Optimizer::VALENCE);
+    optimizer.flip_pass(Optimizer::SHAPE);
+    optimizer.smoothing_pass();
+    optimizer.smoothing_pass();
+  }
+  const auto cut_deep = [&](const std::vector<double>& gaps) { return std::count_if(gaps.begin(), gaps.end(), [&](double g) { return g > bound; }); };
+  const std::vector<double> gaps_before = chord_gaps(c, shortest);
+  ASSERT_GT(cut_deep(gaps_before), 20);
+  const Optimized_mesh_statistics before = statistics(c.points, c.positions, c.triangles);
+  const std::size_t points_before = c.points.size();
+
+  RM::Edge_split_bounds bounds;
+  bounds.off_surface = bound;
+  bounds.shortest_off_surface = shortest;
+  std::size_t chord_splits = 0;
+  const std::size_t splits = optimizer.split_pass(bounds, chord_splits);
+  EXPECT_GT(splits, 0u);
+  EXPECT_EQ(chord_splits, splits); // no edge was split for its length
+  EXPECT_EQ(c.points.size(), points_before + splits);
+  const Optimized_mesh_statistics after = statistics(c.points, c.positions, c.triangles);
+  expect_domain_and_bounds_kept(c, before, after);
+  const std::vector<double> gaps_after = chord_gaps(c, shortest);
+  std::cout << "inner chords cutting more than 0.15 h under a crease: " << cut_deep(gaps_before) << " before, "
+            << cut_deep(gaps_after) << " after " << splits << " splits; deepest "
+            << *std::max_element(gaps_before.begin(), gaps_before.end()) / h << " h, "
+            << *std::max_element(gaps_after.begin(), gaps_after.end()) / h << " h" << std::endl;
+  // Only a split refused for the angle bound leaves one.
+  EXPECT_LT(cut_deep(gaps_after), cut_deep(gaps_before) / 4);
+  EXPECT_LE(*std::max_element(gaps_after.begin(), gaps_after.end()), *std::max_element(gaps_before.begin(), gaps_before.end()));
 }
 
 TEST(RemeshConformal, LocationsInSliversAreExact)
@@ -750,7 +832,7 @@ TEST(SurfaceOptimization, LeavesANonManifoldInputAsIs)
     positions.push_back(wavy_lift(p));
   const auto points_before = points;
   const auto triangles_before = triangles;
-  EXPECT_FALSE(RM::optimize_on_surface(points, positions, triangles, 0, wavy_lift_near, 28., 1., 0.9, 3).optimized);
+  EXPECT_FALSE(RM::optimize_on_surface(points, positions, triangles, 0, wavy_lift_near, 28., 1., longer_than(0.9), 3).optimized);
   EXPECT_EQ(points, points_before);
   EXPECT_EQ(triangles, triangles_before);
 }

@@ -352,6 +352,9 @@ TEST(RemeshAnyTopology, CgalElephantGenusThree)
   const CR::Remeshing_report report = check_remeshing(elephant, remeshing_checks::Quality_bars(25.));
   EXPECT_GT(report.flips_after_gluing, 0u);
   EXPECT_GT(report.moves_after_gluing, 1000u);
+  // The edges that cut under the bends of its scanned skin are split (200 at 1% of the diagonal).
+  EXPECT_GT(report.optimization_chord_splits, 0u);
+  EXPECT_LT(report.optimization_chord_splits, report.optimization_splits);
 }
 
 // The elephant at a target of 0.012 (0.87% of its diagonal). Its cuts between patches follow input
