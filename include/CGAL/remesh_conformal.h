@@ -210,9 +210,10 @@ constexpr double split_edge_factor = 1.26;
 // the input sat on the bent CAD sheets, the elephant, the anchor and nefertiti. Remeshing
 // benchmark, 2026-11-26, with the passes again and the long edges split at 1.28 h: the
 // elephant's distances to / from the input 1.14 / 1.19 -> 0.92 / 0.98 times isotropic_remeshing's,
-// the CAD sheet with 10 holes 1.17 / 1.13 -> 0.89 / 0.86, 0.2% to 2% more vertices. At 0.25 h the elephant did not gain; at 0.12 and
-// 0.10 h its edges within [0.7, 1.4] h fell to 93.2% and 92.7% (issue #5 asks 95%): its scanned
-// skin has many small bends. The sweep is in the benchmark's README.
+// the CAD sheet with 10 holes 1.17 / 1.13 -> 0.89 / 0.86, 0.2% to 2% more vertices. At 0.25 h
+// the elephant did not gain; at 0.12 and 0.10 h its edges within [0.7, 1.4] h fell to 93.2% and
+// 92.7% (issue #5 asks 95%): its scanned skin has many small bends. The sweep is in the
+// benchmark's README.
 constexpr double off_surface_split_factor = 0.15, shortest_off_surface_split_factor = 0.9;
 
 // The planar refinement's shape bound is the smaller of the `minimum_angle` parameter and this:
@@ -245,7 +246,7 @@ struct Remeshed_patch
   /// patch, nor another edge of this one, may join
   std::vector<std::pair<std::size_t, std::size_t> > sample_diagonals;
   std::size_t clamped_vertices = 0;
-  std::size_t flips = 0, splits = 0, chord_splits = 0; // by the optimization
+  Surface_optimization_report optimization;
   double seconds_planar_meshing = 0., seconds_optimization = 0., seconds_pull_back = 0.;
 };
 
@@ -422,13 +423,10 @@ inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, c
     split_bounds.longest = split_edge_factor * sizing.target();
     split_bounds.off_surface = off_surface_split_factor * sizing.target();
     split_bounds.shortest_off_surface = shortest_off_surface_split_factor * sizing.target();
-    const Surface_optimization_report optimized =
+    result.optimization =
       optimize_on_surface(planar.points, positions, planar.triangles, planar.number_of_fixed_points, lift, min_angle,
                           longest_edge_factor * sizing.target(), split_bounds, optimization_rounds,
                           result.boundary_ids, diagonals_to_split);
-    result.flips = optimized.flips;
-    result.splits = optimized.splits;
-    result.chord_splits = optimized.chord_splits;
   }
   result.seconds_optimization = std::chrono::duration<double>(Clock::now() - start).count();
   // The optimizer keeps every chord (it never flips a boundary edge) and makes none of the
@@ -587,8 +585,8 @@ Meshed_patches mesh_patches_on_shared_samples(const Poly_annulus_segmentation& s
         time_limit.check("while meshing the patches");
         if(scales[p].empty()) // a patch may be meshed again (denser curves, split diagonals)
           scales[p] = local_scale(flattenings[p]);
-        remeshed[p] = remesh_flattened_patch(flattenings[p], scales[p], patches[p], samples, sizing, min_angle,
-                                                                  smoothing, optimization_rounds, diagonals_to_split[p]);
+        remeshed[p] = remesh_flattened_patch(flattenings[p], scales[p], patches[p], samples, sizing, min_angle, smoothing,
+                                             optimization_rounds, diagonals_to_split[p]);
       }
       catch(const Error& e)
       {
@@ -870,9 +868,9 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
       report.seconds_planar_meshing += r.seconds_planar_meshing;
       report.seconds_optimization += r.seconds_optimization;
       report.seconds_pull_back += r.seconds_pull_back;
-      report.optimization_flips += r.flips;
-      report.optimization_splits += r.splits;
-      report.optimization_chord_splits += r.chord_splits;
+      report.optimization_flips += r.optimization.flips;
+      report.optimization_splits += r.optimization.splits;
+      report.optimization_chord_splits += r.optimization.chord_splits;
       report.clamped_vertices += r.clamped_vertices;
     }
 

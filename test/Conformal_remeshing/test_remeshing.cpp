@@ -337,6 +337,19 @@ Optimization_case square_with_hole(double size, std::function<CGAL::Epick::Point
   return c;
 }
 
+// The rounds of flips and smoothing that optimize_on_surface() runs before its splits.
+template <typename Optimizer>
+void run_rounds(Optimizer& optimizer, int rounds)
+{
+  for(int round = 0; round < rounds; ++round)
+  {
+    optimizer.flip_pass(Optimizer::VALENCE);
+    optimizer.flip_pass(Optimizer::SHAPE);
+    optimizer.smoothing_pass();
+    optimizer.smoothing_pass();
+  }
+}
+
 RM::Edge_split_bounds longer_than(double length)
 {
   RM::Edge_split_bounds bounds;
@@ -474,13 +487,7 @@ TEST(SurfaceOptimization, SplitsTheEdgesThatCutUnderABend)
   typedef RM::Surface_mesh_optimizer<Optimization_case> Optimizer;
   Optimizer optimizer(c.points, c.positions, c.triangles, c, 28., 1.4 * h);
   ASSERT_TRUE(optimizer.initialize(c.raw.number_of_samples));
-  for(int round = 0; round < 5; ++round)
-  {
-    optimizer.flip_pass(Optimizer::VALENCE);
-    optimizer.flip_pass(Optimizer::SHAPE);
-    optimizer.smoothing_pass();
-    optimizer.smoothing_pass();
-  }
+  run_rounds(optimizer, 5);
   const auto cut_deep = [&](const std::vector<double>& gaps) { return std::count_if(gaps.begin(), gaps.end(), [&](double g) { return g > bound; }); };
   const std::vector<double> gaps_before = chord_gaps(c, shortest);
   ASSERT_GT(cut_deep(gaps_before), 20);
@@ -568,13 +575,7 @@ TEST(SurfaceOptimization, AnglePassesRaiseTheTrianglesBelowThirtyDegrees)
   typedef RM::Surface_mesh_optimizer<decltype(lift)> Optimizer;
   Optimizer optimizer(points, positions, triangles, lift, 28., 0.07);
   ASSERT_TRUE(optimizer.initialize(raw.number_of_samples));
-  for(int round = 0; round < 5; ++round)
-  {
-    optimizer.flip_pass(Optimizer::VALENCE);
-    optimizer.flip_pass(Optimizer::SHAPE);
-    optimizer.smoothing_pass();
-    optimizer.smoothing_pass();
-  }
+  run_rounds(optimizer, 5);
   for(int pass = 0; pass < 3; ++pass)
     optimizer.skewness_pass(0.12);
   auto below_30 = [&]() {
