@@ -808,7 +808,8 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
   // --- flattening, with bisection of the patches that fail or stretch too much ------------------
   start = Clock::now();
   Flattened_poly_annuli flattened;
-  // The flattening takes its own parameters from `np` (not the input's maps).
+  // The flattening takes its own parameters from `np` (not the input's maps). The flow resolves
+  // the map at twice the target, finer on tubes (see `internal::flow_edge_length()`).
   internal::flatten_poly_annuli<ConcurrencyTag>(
     segmentation, flattened, parameters::maximum_edge_length(2. * h, parameters::snap_distance(0.1 * h, np)),
     time_limit, "remesh_conformal");

@@ -18,6 +18,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -62,6 +63,61 @@ void make_sphere(Mesh& mesh, int levels, K::Vector_3 offset = K::Vector_3(0, 0, 
     sphere.point(x) = CGAL::ORIGIN + d / std::sqrt(d.squared_length()) + offset;
   }
   CGAL::copy_face_graph(sphere, mesh);
+}
+
+// An open frustum around the z axis, of radii r0 at z = 0 and r1 at `height`, cut as CAD
+// exporters cut a drilled hole's wall: `segments` around and vertex rings at the rims and at
+// mid-height only, so that every face is a sliver from a rim to the middle.
+void make_drilled_wall(Mesh& mesh, double r0, double r1, double height, int segments)
+{
+  std::vector<Mesh::Vertex_index> v;
+  for(int ring = 0; ring < 3; ++ring)
+    for(int i = 0; i < segments; ++i)
+    {
+      const double a = 2. * CGAL_PI * i / segments, r = r0 + 0.5 * ring * (r1 - r0);
+      v.push_back(mesh.add_vertex(K::Point_3(r * std::cos(a), r * std::sin(a), 0.5 * ring * height)));
+    }
+  auto at = [&](int ring, int i) { return v[ring * segments + (i % segments)]; };
+  for(int ring = 0; ring < 2; ++ring)
+    for(int i = 0; i < segments; ++i)
+    {
+      mesh.add_face(at(ring, i), at(ring, i + 1), at(ring + 1, i + 1));
+      mesh.add_face(at(ring, i), at(ring + 1, i + 1), at(ring + 1, i));
+    }
+}
+
+// The largest ratio between the map's scales (planar over surface perimeter) on two flat
+// triangles around one vertex of a flattening's triangulation: how much of the scale's
+// growth one triangle spans, where the map is affine.
+double largest_scale_jump(const CR::Conformal_flattening& flat)
+{
+  std::vector<double> smallest(flat.layout.size(), HUGE_VAL), largest(flat.layout.size(), 0.);
+  for(std::size_t t = 0; t < flat.triangles.size(); ++t)
+  {
+    std::array<K::Point_3, 3> x;
+    for(int c = 0; c < 3; ++c)
+    {
+      std::array<double, 3> b{{0., 0., 0.}};
+      b[c] = 1.;
+      x[c] = flat.surface_point(t, b);
+    }
+    double planar = 0., spatial = 0.;
+    for(int c = 0; c < 3; ++c)
+    {
+      planar += std::sqrt(CGAL::squared_distance(flat.layout[flat.triangles[t][c]], flat.layout[flat.triangles[t][(c + 1) % 3]]));
+      spatial += std::sqrt(CGAL::squared_distance(x[c], x[(c + 1) % 3]));
+    }
+    for(int v : flat.triangles[t])
+    {
+      smallest[v] = (std::min)(smallest[v], planar / spatial);
+      largest[v] = (std::max)(largest[v], planar / spatial);
+    }
+  }
+  double jump = 1.;
+  for(std::size_t v = 0; v < smallest.size(); ++v)
+    if(largest[v] > 0.)
+      jump = (std::max)(jump, largest[v] / smallest[v]);
+  return jump;
 }
 
 bm::Perforated_plate_parameters plate_with_holes(int holes)
@@ -398,6 +454,42 @@ TEST(RemeshAnyTopology, FlattenPolyAnnuliBisectsAndReturnsTheFinalPatches)
   }
   test_support::expect_error([&] { CR::flatten_poly_annuli(segmentation, flattened, CR::parameters::maximum_scale_ratio(1.)); },
                              CR::Error_code::INVALID_INPUT, {"flatten_poly_annuli: the maximum scale ratio must be above 1"});
+}
+
+// The wall of a drilled hole (issue #6's brake disc: radius 5, height 28, slivers from the rims
+// to the mid-plane) is a tube: the map's scale grows like exp(2 pi z / C) along it, and at the
+// twice the target that other patches get, one flat triangle spans a factor of several. It is
+// flattened at a tenth of its circumference; a frustum whose loops differ sixfold is no tube.
+TEST(RemeshAnyTopology, TubesAreFlattenedAtATenthOfTheirCircumference)
+{
+  const double h = 4.8;
+  Mesh wall;
+  make_drilled_wall(wall, 5., 5., 28., 96);
+  CR::Poly_annulus_segmentation segmentation;
+  CR::segment_into_poly_annuli(wall, segmentation, CR::parameters::snap_distance(0.1 * h));
+  CR::Flattened_poly_annuli flattened;
+  CR::flatten_poly_annuli(segmentation, flattened, CR::parameters::maximum_edge_length(2. * h, CR::parameters::snap_distance(0.1 * h)));
+  ASSERT_EQ(flattened.patches.size(), 1u);
+  ASSERT_EQ(flattened.patches[0].boundary_loops, 2u);
+  const double circumference = 96. * 2. * 5. * std::sin(CGAL_PI / 96.);
+  EXPECT_NEAR(CR::internal::flow_edge_length(flattened.patches[0], 2. * h), circumference / 10., 1e-9);
+  EXPECT_NEAR(CR::internal::flow_edge_length(flattened.patches[0], 20. * h), 5. * h, 1e-9); // at most 16 times the vertices
+  ASSERT_EQ(flattened.flattenings[0].report.status, CR::Error_code::SUCCESS);
+  const CR::Conformal_flattening coarse = CR::conformal_flatten(flattened.patches[0].mesh, CR::parameters::maximum_edge_length(2. * h));
+  ASSERT_EQ(coarse.report.status, CR::Error_code::SUCCESS);
+  const double fine_jump = largest_scale_jump(flattened.flattenings[0]), coarse_jump = largest_scale_jump(coarse);
+  EXPECT_GT(coarse_jump, 4.);
+  EXPECT_LT(fine_jump, 0.5 * coarse_jump);
+  EXPECT_GT(flattened.flattenings[0].report.edge_splits, 2 * coarse.report.edge_splits);
+
+  Mesh frustum;
+  make_drilled_wall(frustum, 5., 30., 28., 96);
+  CR::Extracted_patch not_a_tube;
+  CGAL::copy_face_graph(frustum, not_a_tube.mesh);
+  not_a_tube.boundary_loops = 2;
+  EXPECT_EQ(CR::internal::flow_edge_length(not_a_tube, 2. * h), 2. * h);
+  not_a_tube.boundary_loops = 1;
+  EXPECT_EQ(CR::internal::flow_edge_length(not_a_tube, 2. * h), 2. * h);
 }
 
 // CGAL's joint (genus 2, CAD slivers down to 0.5 degrees): all of issue #6's shape bars.

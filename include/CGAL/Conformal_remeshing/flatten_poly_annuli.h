@@ -18,6 +18,7 @@
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/tags.h>
 
+#include <cmath>
 #include <functional>
 #include <string>
 #include <vector>
@@ -42,6 +43,51 @@ struct Flattened_poly_annuli
 
 namespace internal {
 
+/// The lengths of the boundary loops of `mesh`.
+inline std::vector<double> boundary_loop_lengths(const Extracted_patch::Mesh& mesh)
+{
+  std::vector<double> lengths;
+  std::vector<char> seen(mesh.number_of_halfedges(), 0);
+  for(auto h : mesh.halfedges())
+  {
+    if(!mesh.is_border(h) || seen[h])
+      continue;
+    double length = 0.;
+    auto g = h;
+    do
+    {
+      seen[g] = 1;
+      length += std::sqrt(CGAL::squared_distance(mesh.point(mesh.source(g)), mesh.point(mesh.target(g))));
+      g = mesh.next(g);
+    }
+    while(g != h);
+    lengths.push_back(length);
+  }
+  return lengths;
+}
+
+/// The largest edge length the flow may keep on `patch` (see `conformal_flatten()`'s
+/// `maximum_edge_length`): `longest`, or on a tube a tenth of its shorter loop when that is
+/// less, but not below a quarter of `longest` (at most 16 times the vertices). A tube, an
+/// annulus whose loops are within a factor of 4 in length, has a map whose scale grows like
+/// exp(2 pi d / C) along it, for a circumference C, and the map is affine on each flat triangle,
+/// so a triangle must not span much of that growth. On the walls of the 10 mm holes of issue #6's
+/// brake disc (height 28, circumference 31, one sliver from a rim to the mid-plane), twice the
+/// target (9.6) spans a factor of 6.8; the remeshed walls averaged a skewness of 0.163 (the
+/// hub's, circumference 500, 0.119). (An annulus with a small hole in a large sheet is no tube:
+/// its scale changes near the hole only, and a tenth of the hole over the sheet would be costly.)
+constexpr double tube_resolution = 1. / 10.;
+inline double flow_edge_length(const Extracted_patch& patch, double longest)
+{
+  if(!(longest > 0.) || patch.boundary_loops != 2)
+    return longest;
+  const std::vector<double> loops = boundary_loop_lengths(patch.mesh);
+  const double shorter = (std::min)(loops[0], loops[1]), longer = (std::max)(loops[0], loops[1]);
+  if(!(longer <= 4. * shorter))
+    return longest;
+  return (std::min)(longest, (std::max)(0.25 * longest, tube_resolution * shorter));
+}
+
 // `flatten_poly_annuli()` with the time limit and the name (for messages) of its caller.
 template <typename ConcurrencyTag, typename NamedParameters>
 void flatten_poly_annuli(Poly_annulus_segmentation& segmentation, Flattened_poly_annuli& result, const NamedParameters& np,
@@ -57,13 +103,12 @@ void flatten_poly_annuli(Poly_annulus_segmentation& segmentation, Flattened_poly
     throw Error(Error_code::INVALID_INPUT, caller + ": the maximum scale ratio must be above 1");
   const double snap = choose_parameter(get_parameter(np, internal_np::snap_distance), 0.);
   // Only the flattening's own parameters go on to it: the others name the input's maps.
-  const auto flattening_parameters = parameters::maximum_edge_length(
-    choose_parameter(get_parameter(np, internal_np::maximum_edge_length), 0.),
-    parameters::annulus_inner_radius(
-      choose_parameter(get_parameter(np, internal_np::annulus_inner_radius), 0.3),
-      parameters::curvature_tolerance(choose_parameter(get_parameter(np, internal_np::curvature_tolerance), 1e-10),
-                                      CGAL::parameters::number_of_iterations(
-                                        choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 50)))));
+  const double longest_edge = choose_parameter(get_parameter(np, internal_np::maximum_edge_length), 0.);
+  const auto flattening_parameters = parameters::annulus_inner_radius(
+    choose_parameter(get_parameter(np, internal_np::annulus_inner_radius), 0.3),
+    parameters::curvature_tolerance(choose_parameter(get_parameter(np, internal_np::curvature_tolerance), 1e-10),
+                                    CGAL::parameters::number_of_iterations(
+                                      choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 50))));
 
   result = Flattened_poly_annuli();
   std::vector<std::string> failures;
@@ -79,8 +124,11 @@ void flatten_poly_annuli(Poly_annulus_segmentation& segmentation, Flattened_poly
       try
       {
         result.patches[p] = extract_patch(segmentation, result.faces[p]);
-        result.flattenings[p] =
-          conformal_flatten(result.patches[p].mesh, parameters::maximum_running_time(time_limit.remaining(), flattening_parameters));
+        result.flattenings[p] = conformal_flatten(
+          result.patches[p].mesh,
+          parameters::maximum_running_time(time_limit.remaining(),
+                                           parameters::maximum_edge_length(flow_edge_length(result.patches[p], longest_edge),
+                                                                           flattening_parameters)));
         const Flattening_report& r = result.flattenings[p].report;
         if(r.status == Error_code::NOT_CONVERGED)
           failures[p] = std::string(error_message(r.status)) + " (" + r.flow_message + ")";
@@ -150,7 +198,10 @@ void flatten_poly_annuli(Poly_annulus_segmentation& segmentation, Flattened_poly
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
 /// `maximum_edge_length`, `annulus_inner_radius`, `curvature_tolerance` and
-/// `number_of_iterations` are passed on to `conformal_flatten()`.
+/// `number_of_iterations` are passed on to `conformal_flatten()`; on a tube (an annulus whose
+/// loops are within a factor of 4 in length) the maximum edge length is at most a tenth of its
+/// shorter loop, but not below a quarter of the given one: the map's scale grows exponentially
+/// along a tube, and the map is affine on each flat triangle.
 ///
 /// \throws Error with the flattening's code when a patch cannot be flattened even after 8
 ///         bisections or no plane bisects it, with `Error_code::TIME_LIMIT_EXCEEDED` past the
