@@ -457,8 +457,8 @@ TEST(RemeshAnyTopology, FlattenPolyAnnuliBisectsAndReturnsTheFinalPatches)
 }
 
 // The wall of a drilled hole (issue #6's brake disc: radius 5, height 28, slivers from the rims
-// to the mid-plane) is a tube: the map's scale grows like exp(2 pi z / C) along it, and at the
-// twice the target that other patches get, one flat triangle spans a factor of several. It is
+// to the mid-plane) is a tube: the map's scale grows like exp(2 pi z / C) along it, and at twice
+// the target, which other patches get, one flat triangle spans a factor of several. It is
 // flattened at a tenth of its circumference; a frustum whose loops differ sixfold is no tube.
 TEST(RemeshAnyTopology, TubesAreFlattenedAtATenthOfTheirCircumference)
 {
