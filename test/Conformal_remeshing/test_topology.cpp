@@ -91,23 +91,17 @@ void make_drilled_wall(Mesh& mesh, double r0, double r1, double height, int segm
 // growth one triangle spans, where the map is affine.
 double largest_scale_jump(const CR::Conformal_flattening& flat)
 {
+  const std::vector<K::Point_3> x = CR::internal::remeshing::vertex_surface_points(flat);
   std::vector<double> smallest(flat.layout.size(), HUGE_VAL), largest(flat.layout.size(), 0.);
-  for(std::size_t t = 0; t < flat.triangles.size(); ++t)
+  for(const std::array<int, 3>& t : flat.triangles)
   {
-    std::array<K::Point_3, 3> x;
-    for(int c = 0; c < 3; ++c)
-    {
-      std::array<double, 3> b{{0., 0., 0.}};
-      b[c] = 1.;
-      x[c] = flat.surface_point(t, b);
-    }
     double planar = 0., spatial = 0.;
     for(int c = 0; c < 3; ++c)
     {
-      planar += std::sqrt(CGAL::squared_distance(flat.layout[flat.triangles[t][c]], flat.layout[flat.triangles[t][(c + 1) % 3]]));
-      spatial += std::sqrt(CGAL::squared_distance(x[c], x[(c + 1) % 3]));
+      planar += std::sqrt(CGAL::squared_distance(flat.layout[t[c]], flat.layout[t[(c + 1) % 3]]));
+      spatial += std::sqrt(CGAL::squared_distance(x[t[c]], x[t[(c + 1) % 3]]));
     }
-    for(int v : flat.triangles[t])
+    for(int v : t)
     {
       smallest[v] = (std::min)(smallest[v], planar / spatial);
       largest[v] = (std::max)(largest[v], planar / spatial);

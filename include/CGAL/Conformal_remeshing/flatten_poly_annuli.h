@@ -16,10 +16,12 @@
 #include <CGAL/Conformal_remeshing/segment_into_poly_annuli.h>
 
 #include <CGAL/Named_function_parameters.h>
+#include <CGAL/Polygon_mesh_processing/border.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/tags.h>
 
-#include <cmath>
 #include <functional>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -43,29 +45,6 @@ struct Flattened_poly_annuli
 
 namespace internal {
 
-/// The lengths of the boundary loops of `mesh`.
-inline std::vector<double> boundary_loop_lengths(const Extracted_patch::Mesh& mesh)
-{
-  std::vector<double> lengths;
-  std::vector<char> seen(mesh.number_of_halfedges(), 0);
-  for(auto h : mesh.halfedges())
-  {
-    if(!mesh.is_border(h) || seen[h])
-      continue;
-    double length = 0.;
-    auto g = h;
-    do
-    {
-      seen[g] = 1;
-      length += std::sqrt(CGAL::squared_distance(mesh.point(mesh.source(g)), mesh.point(mesh.target(g))));
-      g = mesh.next(g);
-    }
-    while(g != h);
-    lengths.push_back(length);
-  }
-  return lengths;
-}
-
 /// The largest edge length the flow may keep on `patch` (see `conformal_flatten()`'s
 /// `maximum_edge_length`): `longest`, or on a tube a tenth of its shorter loop when that is
 /// less, but not below a quarter of `longest` (at most 16 times the vertices). A tube, an
@@ -81,8 +60,11 @@ inline double flow_edge_length(const Extracted_patch& patch, double longest)
 {
   if(!(longest > 0.) || patch.boundary_loops != 2)
     return longest;
-  const std::vector<double> loops = boundary_loop_lengths(patch.mesh);
-  const double shorter = (std::min)(loops[0], loops[1]), longer = (std::max)(loops[0], loops[1]);
+  std::vector<Extracted_patch::Mesh::Halfedge_index> loops;
+  Polygon_mesh_processing::extract_boundary_cycles(patch.mesh, std::back_inserter(loops));
+  const double a = Polygon_mesh_processing::face_border_length(loops.at(0), patch.mesh),
+               b = Polygon_mesh_processing::face_border_length(loops.at(1), patch.mesh);
+  const double shorter = (std::min)(a, b), longer = (std::max)(a, b);
   if(!(longer <= 4. * shorter))
     return longest;
   return (std::min)(longest, (std::max)(0.25 * longest, tube_resolution * shorter));
