@@ -823,6 +823,103 @@ TEST(PlanarMesher, FixedPointsAreVerticesThatStayPut)
   EXPECT_GE(smallest, 20.);
 }
 
+// The map from the plane to a unit cylinder that is conformal, (r, theta) -> (cos theta,
+// sin theta, log r): the scale grows like exp(z) along it, as on a flattened tube.
+bool onto_unit_cylinder(const CGAL::Epick::Point_2& p, CGAL::Epick::Point_3& x)
+{
+  const double r = std::sqrt(CGAL::square(p.x()) + CGAL::square(p.y()));
+  x = CGAL::Epick::Point_3(p.x() / r, p.y() / r, std::log(r));
+  return r >= 1. - 1e-9 && r <= std::exp(4.) + 1e-9;
+}
+
+TEST(PlanarMesher, EquilateralSeedsStartTheFirstRowsAlongATube)
+{
+  // A tube of height 4 around the unit cylinder, flattened to the annulus between radii 1 and
+  // e^4, each loop with 8 samples: the scale varies by e^0.66 across one triangle of a row.
+  const double pi = 3.14159265358979323846;
+  std::vector<RM::Boundary_sample> outer, hole;
+  for(int i = 0; i < 8; ++i)
+  {
+    const double a = 2. * pi * i / 8., b = -a;
+    outer.push_back(RM::Boundary_sample{CGAL::Epick::Point_2(std::exp(4.) * std::cos(a), std::exp(4.) * std::sin(a)),
+                                        CGAL::Epick::Point_3(std::cos(a), std::sin(a), 4.)});
+    hole.push_back(RM::Boundary_sample{CGAL::Epick::Point_2(std::cos(b), std::sin(b)), CGAL::Epick::Point_3(std::cos(b), std::sin(b), 0.)});
+  }
+  const std::vector<std::vector<RM::Boundary_sample> > loops{outer, hole};
+  const auto all = [](std::size_t, std::size_t) { return true; };
+  auto lifted = [](const CGAL::Epick::Point_2& p) {
+    CGAL::Epick::Point_3 x;
+    EXPECT_TRUE(onto_unit_cylinder(p, x));
+    return x;
+  };
+  // Row 1 (per loop) over the chords, row 2 over the segments between consecutive seeds of row 1:
+  // equilateral on the cylinder, inside the tube; the planar equilateral apex is not.
+  const std::vector<RM::Planar_seed> seeds = RM::equilateral_seeds(loops, all, onto_unit_cylinder, 2);
+  ASSERT_EQ(seeds.size(), 32u);
+  for(std::size_t k = 0; k < 32; ++k)
+  {
+    const std::size_t loop = k / 16, row = (k / 8) % 2, i = k % 8;
+    const CGAL::Epick::Point_2 a = row == 0 ? loops[loop][i].uv : seeds[k - 8].point,
+                               b = row == 0 ? loops[loop][(i + 1) % 8].uv : seeds[k - 8 - i + (i + 1) % 8].point;
+    const CGAL::Epick::Point_3 x = lifted(seeds[k].point), p = lifted(a), q = lifted(b);
+    const double side = std::sqrt(CGAL::squared_distance(p, q));
+    EXPECT_NEAR(std::sqrt(CGAL::squared_distance(x, p)), side, 1e-3 * side);
+    EXPECT_NEAR(std::sqrt(CGAL::squared_distance(x, q)), side, 1e-2 * side);
+    const double height = loop == 0 ? 4. - x.z() : x.z();
+    EXPECT_NEAR(height, (row + 1) * 0.866 * 2. * std::sin(pi / 8.), 0.05);
+    const CGAL::Epick::Point_2 planar_apex = CGAL::midpoint(a, b) + 0.866 * (b - a).perpendicular(CGAL::COUNTERCLOCKWISE);
+    EXPECT_GT(std::sqrt(CGAL::squared_distance(planar_apex, seeds[k].point)), 0.1 * std::sqrt(CGAL::squared_distance(a, b)));
+  }
+  EXPECT_EQ(RM::equilateral_seeds(loops, all, onto_unit_cylinder).size(), 16u);
+  EXPECT_EQ(RM::equilateral_seeds(loops, [](std::size_t k, std::size_t i) { return k == 0 && i < 3; }, onto_unit_cylinder, 2).size(), 5u);
+
+  // Meshed with a size of 1.4 chords on the cylinder, with and without the seeds, smoothed once:
+  // the triangles on the 16 chords, judged on the cylinder, and the points inside (rows of
+  // equilateral triangles need 5 rows of 8).
+  const auto size = [&](const CGAL::Epick::Point_2& p) { return 1.4 * 2. * std::sin(pi / 8.) * std::sqrt(p.x() * p.x() + p.y() * p.y()); };
+  struct Result
+  {
+    double median_height = 0., mean_skewness = 0.; // of the triangles on the chords, over the chords
+    std::size_t inner_points = 0;
+  };
+  auto mesh = [&](const std::vector<RM::Planar_seed>& with) {
+    const RM::Planar_mesh m = RM::mesh_planar_domain<CGAL::Epick>(loops, 20.7, size, 1, false, {}, {}, with);
+    Result result;
+    result.inner_points = m.points.size() - m.number_of_samples;
+    std::vector<double> heights;
+    for(const auto& t : m.triangles)
+      for(int c = 0; c < 3; ++c)
+      {
+        const int i = t[(c + 1) % 3], j = t[(c + 2) % 3];
+        if(i >= int(m.number_of_samples) || j >= int(m.number_of_samples) || i / 8 != j / 8
+           || (std::abs(i - j) != 1 && std::abs(i - j) != 7))
+          continue;
+        const CGAL::Epick::Point_3 p = lifted(m.points[i]), q = lifted(m.points[j]), r = lifted(m.points[t[c]]);
+        heights.push_back(std::sqrt(CGAL::squared_distance(r, K::Line_3(p, q)) / CGAL::squared_distance(p, q)));
+        result.mean_skewness += CR::triangle_quality(p, q, r).skewness / 16.;
+      }
+    EXPECT_EQ(heights.size(), 16u);
+    std::sort(heights.begin(), heights.end());
+    result.median_height = heights.at(heights.size() / 2);
+    return result;
+  };
+  const Result seeded = mesh(seeds), unseeded = mesh({});
+  std::cout << "first row: median height " << seeded.median_height << " (without seeds " << unseeded.median_height
+            << "), mean skewness " << seeded.mean_skewness << " (" << unseeded.mean_skewness << "); inner points "
+            << seeded.inner_points << " (" << unseeded.inner_points << ")" << std::endl;
+  EXPECT_GT(seeded.median_height, 0.8);
+  EXPECT_LT(seeded.mean_skewness, 0.1);
+  EXPECT_LT(seeded.mean_skewness, 0.5 * unseeded.mean_skewness);
+  EXPECT_LE(seeded.inner_points, 52u);
+  EXPECT_GE(unseeded.inner_points, 60u);
+
+  // A seed nearer a sample than its clearance is left out.
+  const RM::Planar_mesh m = RM::mesh_planar_domain<CGAL::Epick>(
+    loops, 20.7, size, 0, false, {}, {}, {RM::Planar_seed{CGAL::Epick::Point_2(1.05, 0.), 0.1}, RM::Planar_seed{CGAL::Epick::Point_2(1.5, 1.5), 0.1}});
+  EXPECT_EQ(std::count(m.points.begin(), m.points.end(), CGAL::Epick::Point_2(1.05, 0.)), 0);
+  EXPECT_EQ(std::count(m.points.begin(), m.points.end(), CGAL::Epick::Point_2(1.5, 1.5)), 1);
+}
+
 TEST(SurfaceOptimization, LeavesANonManifoldInputAsIs)
 {
   // Three triangles on the edge (0, 1).
