@@ -412,20 +412,8 @@ inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, c
     fixed_points.push_back(flat.uv[v]);
   // The first rows of triangles along features, borders and user patch borders are seeded (see
   // equilateral_seeds()); along cuts the points move after gluing instead (moves_after_gluing.h).
-  // Not along slits (feature chains that end inside the patch, the false features of a scan):
-  // with them CGAL's elephant had 93% of its edges within [0.7, 1.4] times the target (95.5%
-  // without seeds) and a distance to the input 0.96 times isotropic_remeshing's (0.90).
   Remembering_surface_map surface_map(flat, locator);
-  std::vector<std::size_t> loop_start(1, 0);
-  for(const auto& loop : loops)
-    loop_start.push_back(loop_start.back() + loop.size());
-  std::map<std::size_t, int> images_of_sample; // two on the sides of a slit
-  for(std::size_t id : result.boundary_ids)
-    ++images_of_sample[id];
-  const auto on_kept_curve = [&](std::size_t k, std::size_t i) {
-    const std::size_t a = result.boundary_ids[loop_start[k] + i], b = result.boundary_ids[loop_start[k] + (i + 1) % loops[k].size()];
-    return images_of_sample[a] == 1 && images_of_sample[b] == 1 && samples.is_kept_chord(a, b);
-  };
+  const auto on_kept_curve = [&](const Boundary_sample& a, const Boundary_sample& b) { return samples.is_kept_chord(a.id, b.id); };
   const auto surface_point = [&](const Epick::Point_2& p, Epick::Point_3& x) {
     const Remembering_surface_map::Lifted& lifted = surface_map.lift(p);
     x = flat.surface_point(lifted.on_patch);

@@ -846,7 +846,7 @@ TEST(PlanarMesher, EquilateralSeedsStartTheFirstRowsAlongATube)
     hole.push_back(RM::Boundary_sample{CGAL::Epick::Point_2(std::cos(b), std::sin(b)), CGAL::Epick::Point_3(std::cos(b), std::sin(b), 0.)});
   }
   const std::vector<std::vector<RM::Boundary_sample> > loops{outer, hole};
-  const auto all = [](std::size_t, std::size_t) { return true; };
+  const auto all = [](const RM::Boundary_sample&, const RM::Boundary_sample&) { return true; };
   auto lifted = [](const CGAL::Epick::Point_2& p) {
     CGAL::Epick::Point_3 x;
     EXPECT_TRUE(onto_unit_cylinder(p, x));
@@ -871,7 +871,10 @@ TEST(PlanarMesher, EquilateralSeedsStartTheFirstRowsAlongATube)
     EXPECT_GT(std::sqrt(CGAL::squared_distance(planar_apex, seeds[k].point)), 0.1 * std::sqrt(CGAL::squared_distance(a, b)));
   }
   EXPECT_EQ(RM::equilateral_seeds(loops, all, onto_unit_cylinder).size(), 16u);
-  EXPECT_EQ(RM::equilateral_seeds(loops, [](std::size_t k, std::size_t i) { return k == 0 && i < 3; }, onto_unit_cylinder, 2).size(), 5u);
+  const auto first_three_outer_chords = [&](const RM::Boundary_sample& a, const RM::Boundary_sample&) {
+    return a.uv == outer[0].uv || a.uv == outer[1].uv || a.uv == outer[2].uv;
+  };
+  EXPECT_EQ(RM::equilateral_seeds(loops, first_three_outer_chords, onto_unit_cylinder, 2).size(), 5u);
 
   // Meshed with a size of 1.4 chords on the cylinder, with and without the seeds, smoothed once:
   // the triangles on the 16 chords, judged on the cylinder, and the points inside (rows of
