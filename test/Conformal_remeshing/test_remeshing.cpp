@@ -495,8 +495,7 @@ TEST(SurfaceOptimization, SplitsTheEdgesThatCutUnderABend)
   const std::size_t points_before = c.points.size();
 
   RM::Edge_split_bounds bounds;
-  bounds.off_surface = bound;
-  bounds.shortest_off_surface = shortest;
+  bounds.across_bend = {shortest, bound};
   std::size_t chord_splits = 0;
   const std::size_t splits = optimizer.split_pass(bounds, chord_splits);
   EXPECT_GT(splits, 0u);
@@ -512,6 +511,55 @@ TEST(SurfaceOptimization, SplitsTheEdgesThatCutUnderABend)
   // Only a split refused for the angle bound leaves one.
   EXPECT_LT(cut_deep(gaps_after), cut_deep(gaps_before) / 4);
   EXPECT_LE(*std::max_element(gaps_after.begin(), gaps_after.end()), *std::max_element(gaps_before.begin(), gaps_before.end()));
+}
+
+// A cylinder of radius 2.5 h (h = 0.07) around the y axis, unrolled isometrically onto the plane:
+// the chord of an edge of length L across it stands about L^2 / (20 h) under the surface, 0.066 h
+// at 1.15 h, and nothing along it.
+CGAL::Epick::Point_3 cylinder_lift(const CGAL::Epick::Point_2& p)
+{
+  const double radius = 2.5 * 0.07;
+  return CGAL::Epick::Point_3(radius * std::sin(p.x() / radius), p.y(), radius * (1. - std::cos(p.x() / radius)));
+}
+
+TEST(SurfaceOptimization, SplitsTheLongChordsOnATightCurveAndKeepsThemOffAfterwards)
+{
+  const double h = 0.07, bound = 0.045 * h, shortest = 1.15 * h;
+  Optimization_case c = square_with_hole(1.3 * h, cylinder_lift); // edges up to the optimizer's 1.4 h
+  typedef RM::Surface_mesh_optimizer<Optimization_case> Optimizer;
+  Optimizer optimizer(c.points, c.positions, c.triangles, c, 28., 1.4 * h);
+  ASSERT_TRUE(optimizer.initialize(c.raw.number_of_samples));
+  run_rounds(optimizer, 5);
+  const auto sagging = [&]() {
+    const std::vector<double> gaps = chord_gaps(c, shortest);
+    return std::count_if(gaps.begin(), gaps.end(), [&](double g) { return g > bound; });
+  };
+  const auto before_split = sagging();
+  ASSERT_GT(before_split, 20);
+  const Optimized_mesh_statistics before = statistics(c.points, c.positions, c.triangles);
+
+  RM::Edge_split_bounds bounds;
+  bounds.tight_curve = {shortest, bound};
+  std::size_t chord_splits = 0;
+  const std::size_t splits = optimizer.split_pass(bounds, chord_splits);
+  EXPECT_EQ(chord_splits, splits);
+  const auto after_split = sagging();
+  EXPECT_LT(after_split, before_split / 4);
+
+  // The passes that end optimize_on_surface(), with the chords kept: they make none the bound
+  // names (a move or flip could only replace one with a shallower one). Without keep_chords(),
+  // the same passes left 35.
+  optimizer.keep_chords(bounds);
+  run_rounds(optimizer, 2);
+  for(int pass = 0; pass < 3; ++pass)
+    optimizer.skewness_pass(0.12);
+  for(int pass = 0; pass < 3; ++pass)
+    optimizer.angle_pass(30.);
+  const auto at_end = sagging();
+  std::cout << "long chords sagging more than 0.045 h on a cylinder of radius 2.5 h: " << before_split << " before, " << after_split
+            << " after " << splits << " splits, " << at_end << " after the passes that follow" << std::endl;
+  EXPECT_LE(at_end, after_split);
+  expect_domain_and_bounds_kept(c, before, statistics(c.points, c.positions, c.triangles));
 }
 
 TEST(RemeshConformal, LocationsInSliversAreExact)

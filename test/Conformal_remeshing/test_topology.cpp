@@ -399,7 +399,10 @@ TEST(RemeshAnyTopology, CgalElephantGenusThree)
   // Issue 6's bars (20 degrees, mean skewness 0.12), with the angle held higher: the samples of
   // the cuts and their neighbours, moved after gluing, took it from 20.7 to 28.4 degrees (and the
   // mean skewness from 0.1242 to 0.1170).
-  const CR::Remeshing_report report = check_remeshing(elephant, remeshing_checks::Quality_bars(25.));
+  // Its edges within [0.7, 1.4] times the target (issue #5's single-patch bar, which issue #6
+  // does not set): 95.5% until the long chords on its tightly curved parts came to be split
+  // (2026-11-27), whose halves fall under 0.7 times the target; 94.65% since, held here.
+  const CR::Remeshing_report report = check_remeshing(elephant, remeshing_checks::Quality_bars(25.).edge_share_above(0.945));
   EXPECT_GT(report.flips_after_gluing, 0u);
   EXPECT_GT(report.moves_after_gluing, 1000u);
   // The edges that cut under the bends of its scanned skin are split (200 at 1% of the diagonal).
