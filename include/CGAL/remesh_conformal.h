@@ -221,7 +221,7 @@ constexpr double off_surface_split_factor = 0.15, shortest_off_surface_split_fac
 // 3.4 h, the longest edges cut under it farther than isotropic_remeshing's did on the joint,
 // whose farthest points from the input sat at edges of 1.19 to 1.26 h, 0.045 to 0.049 h under
 // the surface. From the first split on, the optimizer's flips and moves make no chord across a
-// bend, and its last passes none that either bound names (see optimize_on_surface()). Tool
+// bend, and its skewness passes none that either bound names (see optimize_on_surface()). Tool
 // defaults, 2026-11-27, distances to / from the input as ratios to isotropic_remeshing's, before
 // -> with both: joint 1.01 / 1.01 -> 0.98 / 0.96, fandisk 0.80 / 0.84 -> 0.80 / 0.83, elephant
 // 0.90 / 0.97 -> 0.84 / 0.86 (9200 -> 9464 vertices; the peer has 8818), anchor 0.91 / 0.92 ->
