@@ -565,7 +565,8 @@ Planar_mesh mesh_planar_domain(const std::vector<std::vector<Boundary_sample> >&
         inside.push_back(seed);
     }
     // Each seed is checked against the vertices of the face it falls in and their neighbours:
-    // the seeds before it, the samples and the fixed points.
+    // the seeds before it, the samples and the fixed points. (Located again: the domain marks
+    // hold for the faces before the first seed's insertion only.)
     for(const Planar_seed& seed : inside)
     {
       const Point p(seed.point.x(), seed.point.y());

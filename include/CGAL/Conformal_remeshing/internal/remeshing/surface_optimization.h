@@ -233,7 +233,8 @@ public:
         if(CGAL::orientation(points_[c], points_[a], points_[d]) != CGAL::POSITIVE
            || CGAL::orientation(points_[c], points_[d], points_[b]) != CGAL::POSITIVE)
           continue;
-        if(!keeps_edge_bounds(a, b, c, d) || !keeps_angle_bound(pa, pb, pc, pd) || joins_a_surface_point_twice(c, d))
+        // The edge bounds last: the chord bound lifts a point.
+        if(!keeps_angle_bound(pa, pb, pc, pd) || joins_a_surface_point_twice(c, d) || !keeps_edge_bounds(a, b, c, d))
           continue;
         flip(t, k, u, j);
         ++flips;
@@ -431,7 +432,7 @@ public:
         const int below_before = (old_t > cos_target) + (old_u > cos_target), below_after = (new_t > cos_target) + (new_u > cos_target);
         if(!((std::max)(new_t, new_u) < (std::max)(old_t, old_u) - 1e-9) || below_after > below_before || CGAL::orientation(points_[c], points_[a], points_[d]) != CGAL::POSITIVE
            || CGAL::orientation(points_[c], points_[d], points_[b]) != CGAL::POSITIVE
-           || !keeps_edge_bounds(a, b, c, d) || joins_a_surface_point_twice(c, d))
+           || joins_a_surface_point_twice(c, d) || !keeps_edge_bounds(a, b, c, d))
           continue;
         flip(t, k, u, j);
         flipped = true;
