@@ -390,7 +390,7 @@ TEST(RemeshAnyTopology, UserPatches)
 // 4.9 degrees before them, 17.8 after, 16.9 since the kept tips changed that patch's mesh, 20.7
 // since pieces of cut shorter than 0.3 target lengths do not end at a turn: the worst triangle
 // had two samples 0.18 target lengths apart). Issue #6's 20 degrees and mean skewness of 0.12 are
-// held (0.119 since 2026-11-27).
+// held (0.118 since 2026-11-27).
 TEST(RemeshAnyTopology, CgalElephantGenusThree)
 {
   Mesh elephant;
@@ -401,8 +401,10 @@ TEST(RemeshAnyTopology, CgalElephantGenusThree)
   // mean skewness from 0.1242 to 0.1170).
   // Its edges within [0.7, 1.4] times the target (issue #5's single-patch bar, which issue #6
   // does not set): 95.5% until the long chords on its tightly curved parts came to be split
-  // (2026-11-27), whose halves fall under 0.7 times the target; 94.65% since, held here.
-  const CR::Remeshing_report report = check_remeshing(elephant, remeshing_checks::Quality_bars(25.).edge_share_above(0.945));
+  // (2026-11-27), whose halves fall under 0.7 times the target; 94.65% after; 94.23% since its
+  // tips are kept at 0.03 instead of 0.1 target lengths, with seeded rings around them (the same
+  // day; its mean skewness 0.1195 -> 0.1177, its smallest angle 26.3 -> 27.6 degrees), held here.
+  const CR::Remeshing_report report = check_remeshing(elephant, remeshing_checks::Quality_bars(25.).edge_share_above(0.94));
   EXPECT_GT(report.flips_after_gluing, 0u);
   EXPECT_GT(report.moves_after_gluing, 1000u);
   // The edges that cut under the bends of its scanned skin are split (200 at 1% of the diagonal).
