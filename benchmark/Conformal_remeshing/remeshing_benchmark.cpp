@@ -265,6 +265,9 @@ int main(int argc, char** argv)
     std::string model;
     std::size_t vertices;
     double stage, planar, optimization, pull_back; // wall seconds, then thread seconds
+
+    // output vertices per second of a duration (0 for none measured: no infinity in the JSON)
+    double rate(double seconds) const { return seconds > 0. ? double(vertices) / seconds : 0.; }
   };
   std::vector<Speed> speeds;
   for(std::size_t k = 0; k < models.size(); ++k)
@@ -327,8 +330,8 @@ int main(int argc, char** argv)
     speeds.push_back(Speed{model.name, a.vertices, report.seconds_meshing_stage, report.seconds_planar_meshing,
                            report.seconds_optimization, report.seconds_pull_back});
     const Speed& speed = speeds.back();
-    json << ", \"output_vertices_per_second\": {\"meshing_stage\": " << double(a.vertices) / speed.stage
-         << ", \"planar_meshing_and_pull_back\": " << double(a.vertices) / (speed.planar + speed.pull_back) << "}";
+    json << ", \"output_vertices_per_second\": {\"meshing_stage\": " << speed.rate(speed.stage)
+         << ", \"planar_meshing_and_pull_back\": " << speed.rate(speed.planar + speed.pull_back) << "}";
     json << ", \"isotropic\": ";
     write_json(json, b);
     json << "}";
@@ -341,9 +344,9 @@ int main(int argc, char** argv)
             << "pull" << std::setw(12) << "k/s p+pull" << "\n";
   for(const Speed& speed : speeds)
     std::cout << std::left << std::setw(22) << speed.model << std::right << std::setprecision(3) << std::setw(8)
-              << speed.vertices << std::setw(9) << speed.stage << std::setw(9) << 1e-3 * double(speed.vertices) / speed.stage
+              << speed.vertices << std::setw(9) << speed.stage << std::setw(9) << 1e-3 * speed.rate(speed.stage)
               << std::setw(9) << speed.planar << std::setw(9) << speed.optimization << std::setw(9) << speed.pull_back
-              << std::setw(12) << 1e-3 * double(speed.vertices) / (speed.planar + speed.pull_back) << "\n";
+              << std::setw(12) << 1e-3 * speed.rate(speed.planar + speed.pull_back) << "\n";
   std::cout << "(meshing stage of the last run: stage = meshing, optimization and pull-back of all patches, wall seconds, "
                "and its thousands of output vertices per second; planar, optim, pull: thread seconds of the planar "
                "meshing, the optimization on the surface and the pull-back, summed over patches; k/s p+pull: output "
