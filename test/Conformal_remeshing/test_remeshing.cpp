@@ -894,6 +894,127 @@ bool onto_unit_cylinder(const CGAL::Epick::Point_2& p, CGAL::Epick::Point_3& x)
   return r >= 1. - 1e-9 && r <= std::exp(4.) + 1e-9;
 }
 
+TEST(PlanarMesher, PointAtSurfaceDistanceIsTheBisectionsPointInFewerLifts)
+{
+  // On the flattened tube of onto_unit_cylinder(), from points of the annulus in many directions
+  // and for many distances: point_at_surface_distance() returns, to the bit, the point of the
+  // plain search it replaced (growth of t by half from the guess, then 16 halvings of [0, t]),
+  // and lifts at most half as many points.
+  typedef CGAL::Epick::Point_2 P2;
+  typedef CGAL::Epick::Point_3 P3;
+  std::size_t lifts = 0;
+  const auto counted = [&](const P2& p, P3& x) {
+    ++lifts;
+    return onto_unit_cylinder(p, x);
+  };
+  const auto plain_search = [&](const P2& origin, const CGAL::Epick::Vector_2& direction, const P3& from, double distance,
+                                double guess, double limit, P2& uv) {
+    bool inside = true;
+    auto too_close = [&](double t) {
+      P3 x;
+      inside = counted(origin + t * direction, x);
+      return CGAL::squared_distance(x, from) < distance * distance;
+    };
+    double near = 0., far = guess;
+    while(too_close(far) && inside && far < limit)
+      far *= 1.5;
+    if(!inside || !(far < limit))
+      return false;
+    for(int step = 0; step < 16; ++step)
+    {
+      const double t = 0.5 * (near + far);
+      (too_close(t) ? near : far) = t;
+    }
+    uv = origin + 0.5 * (near + far) * direction;
+    P3 x;
+    return counted(uv, x);
+  };
+  std::size_t found = 0, refused = 0, plain_lifts = 0, new_lifts = 0;
+  for(int k = 0; k < 400; ++k)
+  {
+    const double radius = 1.5 + 0.1 * (k % 40), angle = 0.37 * k, heading = 2.1 * k;
+    const P2 origin(radius * std::cos(angle), radius * std::sin(angle));
+    const CGAL::Epick::Vector_2 direction(std::cos(heading), std::sin(heading));
+    P3 from;
+    ASSERT_TRUE(onto_unit_cylinder(origin, from));
+    const double distance = 0.05 + 0.02 * (k % 31), guess = distance * radius * (0.5 + 0.1 * (k % 13));
+    P2 expected, uv;
+    P3 point;
+    lifts = 0;
+    const bool plain = plain_search(origin, direction, from, distance, guess, 8. * guess, expected);
+    plain_lifts += lifts;
+    lifts = 0;
+    const bool fast = RM::point_at_surface_distance(origin, direction, from, distance, guess, 8. * guess, counted, uv, point);
+    new_lifts += lifts;
+    ASSERT_EQ(fast, plain) << k;
+    if(!fast)
+    {
+      ++refused;
+      continue;
+    }
+    ++found;
+    EXPECT_EQ(uv.x(), expected.x()) << k;
+    EXPECT_EQ(uv.y(), expected.y()) << k;
+    EXPECT_NEAR(std::sqrt(CGAL::squared_distance(point, from)), distance, 1e-3 * distance) << k;
+  }
+  EXPECT_GT(found, 300u);
+  EXPECT_GT(refused, 0u); // rays that leave the annulus or outrun the limit
+  EXPECT_LT(2 * new_lifts, plain_lifts) << new_lifts << " lifts against " << plain_lifts;
+}
+
+TEST(TriangleAdjacency, LinksTwinsVisitsEachEdgeOnceInOrderAndRefusesNonManifoldEdges)
+{
+  // A 9 x 7 grid of squares cut into triangles, its vertex indices shuffled: every interior edge
+  // links its two triangles, edges are visited once each in increasing (smaller, larger) vertex
+  // order; a third triangle on an edge, or a twin running the edge the same way, is refused.
+  const int nx = 9, ny = 7;
+  std::vector<int> label((nx + 1) * (ny + 1));
+  for(std::size_t i = 0; i < label.size(); ++i)
+    label[i] = int(i);
+  std::shuffle(label.begin(), label.end(), std::mt19937(3));
+  auto at = [&](int i, int j) { return label[std::size_t(j * (nx + 1) + i)]; };
+  std::vector<std::array<int, 3> > triangles;
+  for(int j = 0; j < ny; ++j)
+    for(int i = 0; i < nx; ++i)
+    {
+      triangles.push_back({{at(i, j), at(i + 1, j), at(i + 1, j + 1)}});
+      triangles.push_back({{at(i, j), at(i + 1, j + 1), at(i, j + 1)}});
+    }
+  std::vector<std::array<int, 3> > neighbor;
+  std::vector<std::pair<int, int> > visited;
+  std::size_t interior = 0;
+  ASSERT_TRUE(RM::link_triangles(triangles, neighbor, [&](int a, int b, bool inner) {
+    visited.emplace_back(a, b);
+    interior += inner;
+  }));
+  // The expected adjacency, from a map of directed edges.
+  std::map<std::pair<int, int>, int> triangle_of;
+  for(std::size_t t = 0; t < triangles.size(); ++t)
+    for(int k = 0; k < 3; ++k)
+      triangle_of[{triangles[t][(k + 1) % 3], triangles[t][(k + 2) % 3]}] = int(t);
+  for(std::size_t t = 0; t < triangles.size(); ++t)
+    for(int k = 0; k < 3; ++k)
+    {
+      const auto twin = triangle_of.find({triangles[t][(k + 2) % 3], triangles[t][(k + 1) % 3]});
+      EXPECT_EQ(neighbor[t][k], twin == triangle_of.end() ? -1 : twin->second) << t << " " << k;
+    }
+  const std::size_t edges = std::size_t(nx * (ny + 1) + ny * (nx + 1) + nx * ny);
+  EXPECT_EQ(visited.size(), edges);
+  EXPECT_EQ(interior, edges - std::size_t(2 * (nx + ny)));
+  for(std::size_t e = 0; e < visited.size(); ++e)
+  {
+    EXPECT_LT(visited[e].first, visited[e].second);
+    if(e > 0)
+      EXPECT_LT(visited[e - 1], visited[e]);
+  }
+  auto third = triangles;
+  third.push_back({{at(0, 0), at(1, 1), at(5, 5)}}); // on the diagonal of the first square
+  EXPECT_FALSE(RM::link_triangles(third, neighbor, [](int, int, bool) {}));
+  auto flipped = triangles;
+  std::swap(flipped[1][1], flipped[1][2]); // runs the first square's diagonal the same way as its twin
+  EXPECT_FALSE(RM::link_triangles(flipped, neighbor, [](int, int, bool) {}));
+}
+
 TEST(PlanarMesher, EquilateralSeedsStartTheFirstRowsAlongATube)
 {
   // A tube of height 4 around the unit cylinder, flattened to the annulus between radii 1 and

@@ -16,6 +16,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <vector>
 
@@ -48,16 +49,22 @@ public:
     const double cell = std::sqrt((std::max)(area, 1e-300) / double((std::max<std::size_t>)(triangles.size(), 1)));
     nx_ = (std::max)(1, (std::min)(4096, int((box_.xmax() - box_.xmin()) / cell) + 1));
     ny_ = (std::max)(1, (std::min)(4096, int((box_.ymax() - box_.ymin()) / cell) + 1));
-    // Buckets in one array, each cell's triangles in a range of it: counted, then filled.
-    bucket_start_.assign(std::size_t(nx_) * std::size_t(ny_) + 1, 0);
+    // Buckets in one array, each cell's triangles in a range of it, in triangle order: the
+    // (cell, triangle) pairs listed once (a sliver's cells are costly to find), then counted and
+    // placed.
+    std::vector<std::pair<std::uint32_t, std::uint32_t> > entries;
+    entries.reserve(2 * triangles.size());
     for(std::size_t t = 0; t < triangles.size(); ++t)
-      for_each_cell(t, [&](std::size_t cell) { ++bucket_start_[cell + 1]; });
+      for_each_cell(t, [&](std::size_t cell) { entries.emplace_back(std::uint32_t(cell), std::uint32_t(t)); });
+    bucket_start_.assign(std::size_t(nx_) * std::size_t(ny_) + 1, 0);
+    for(const auto& e : entries)
+      ++bucket_start_[e.first + 1];
     for(std::size_t c = 1; c < bucket_start_.size(); ++c)
       bucket_start_[c] += bucket_start_[c - 1];
-    bucket_triangles_.resize(bucket_start_.back());
+    bucket_triangles_.resize(entries.size());
     std::vector<std::size_t> filled(bucket_start_.begin(), bucket_start_.end() - 1);
-    for(std::size_t t = 0; t < triangles.size(); ++t)
-      for_each_cell(t, [&](std::size_t cell) { bucket_triangles_[filled[cell]++] = t; });
+    for(const auto& e : entries)
+      bucket_triangles_[filled[e.first]++] = e.second;
     if(!link_triangles(triangles, neighbor_, [](int, int, bool) {}))
       neighbor_.clear(); // not a manifold triangulation: no walks, the grid alone
   }
@@ -109,6 +116,11 @@ public:
             const std::size_t t = bucket_triangles_[k];
             const std::array<double, 3> b = barycentric(t, p);
             const double score = (std::min)({b[0], b[1], b[2]});
+            // Strictly inside: no other triangle of an embedding holds the point (the scan of the
+            // rest of the cell took half of the location on the brake disc, whose cells along
+            // feature curves hold dozens of slivers).
+            if(score > 0.)
+              return Location{t, b};
             if(score > best_score)
             {
               best_score = score;

@@ -274,28 +274,78 @@ struct Planar_seed
 /// is `distance` away from `from`, found by bisection after growing `t` from `guess` by half
 /// until the image is far enough; the images' distance to `from` must grow with `t`. False when
 /// the ray leaves the flattening first (`surface_point()` below) or `t` reaches `limit`.
+/// Each trial point is a lift through the flow's flips, and the 16 steps of the bisection took
+/// a quarter of the planar stage on the 100k brake disc, whose feature curves are seeded
+/// (2026-11-27). So the answer is first bracketed closely by regula falsi (Illinois), in 3 to 5
+/// lifts, and the bisection lifts only the trial points inside that bracket: the others are on
+/// a known side, as the distance grows with `t`. The result is the bisection's, to the bit.
+/// (Regula falsi alone, to a ten-thousandth of the distance, moves the seeds by about that much,
+/// and the optimization after them amplifies it: the shark's distance to the input, decided at
+/// one detail finer than the target, spread from 0.15 to 0.24 target lengths.)
 template <typename Surface_point>
 bool point_at_surface_distance(const Epick::Point_2& origin, const Epick::Vector_2& direction, const Epick::Point_3& from,
                                double distance, double guess, double limit, const Surface_point& surface_point,
                                Epick::Point_2& uv, Epick::Point_3& point)
 {
   bool inside = true;
-  Epick::Point_3 x;
+  double excess = 0.; // of the last trial point's distance over `distance`, for the regula falsi
   auto too_close = [&](double t) {
+    Epick::Point_3 x;
     inside = surface_point(origin + t * direction, x);
-    return CGAL::squared_distance(x, from) < distance * distance;
+    const double squared = CGAL::squared_distance(x, from);
+    excess = std::sqrt(squared) - distance;
+    return squared < distance * distance;
   };
-  double near = 0., far = guess;
-  while(too_close(far) && inside && far < limit)
-    far *= 1.5;
-  if(!inside || !(far < limit))
+  // [close, far_enough]: the trial points up to `close` are too close, from `far_enough` on not.
+  // The origin is taken as too close without a lift, its image as `from` for the interpolation.
+  double close = 0., far_enough = guess, at_close = -distance, at_far_enough = 0.;
+  while(too_close(far_enough) && inside && far_enough < limit)
+  {
+    close = far_enough;
+    at_close = excess;
+    far_enough *= 1.5;
+  }
+  if(!inside || !(far_enough < limit))
     return false;
+  at_far_enough = excess;
+  const double far = far_enough;
+  // Illinois: an end kept twice in a row has its value halved, so that both ends move.
+  int kept = 0; // +1: `close` was kept last time, -1: `far_enough`
+  for(int step = 0; step < 40 && far_enough - close > 1e-7 * far; ++step)
+  {
+    double t = (close * at_far_enough - far_enough * at_close) / (at_far_enough - at_close);
+    if(!(t > close && t < far_enough))
+      t = 0.5 * (close + far_enough);
+    if(too_close(t))
+    {
+      close = t;
+      at_close = excess;
+      if(kept == -1)
+        at_far_enough *= 0.5;
+      kept = -1;
+    }
+    else
+    {
+      far_enough = t;
+      at_far_enough = excess;
+      if(kept == +1)
+        at_close *= 0.5;
+      kept = +1;
+    }
+  }
+  double near = 0., end = far;
   for(int step = 0; step < 16; ++step)
   {
-    const double t = 0.5 * (near + far);
-    (too_close(t) ? near : far) = t;
+    const double t = 0.5 * (near + end);
+    bool closer = t <= close;
+    if(!closer && t < far_enough)
+    {
+      closer = too_close(t);
+      (closer ? close : far_enough) = t;
+    }
+    (closer ? near : end) = t;
   }
-  uv = origin + 0.5 * (near + far) * direction;
+  uv = origin + 0.5 * (near + end) * direction;
   return surface_point(uv, point);
 }
 
