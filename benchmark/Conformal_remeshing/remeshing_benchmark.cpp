@@ -266,10 +266,12 @@ int main(int argc, char** argv)
     std::string model;
     std::size_t vertices;
     double stage, planar, optimization, pull_back; // wall seconds, then thread seconds
-    double peer_rate; // isotropic_remeshing's output vertices per wall second (median run): the machine's pace
+    double peer_rate; // isotropic_remeshing's output vertices per wall second on the model (median run)
 
-    // output vertices per second of a duration (0 for none measured: no infinity in the JSON)
-    double rate(double seconds) const { return seconds > 0. ? double(vertices) / seconds : 0.; }
+    // `count` per second of a duration (0 for none measured: no infinity in the JSON)
+    static double per_second(std::size_t count, double seconds) { return seconds > 0. ? double(count) / seconds : 0.; }
+    // output vertices per second of a duration
+    double rate(double seconds) const { return per_second(vertices, seconds); }
   };
   std::vector<Speed> speeds;
   for(std::size_t k = 0; k < models.size(); ++k)
@@ -336,7 +338,7 @@ int main(int argc, char** argv)
     write_json(json, a);
     speeds.push_back(Speed{model.name, a.vertices, bm::median(stage_seconds), bm::median(planar_seconds),
                            bm::median(optimization_seconds), bm::median(pull_back_seconds),
-                           b.seconds > 0. ? double(b.vertices) / b.seconds : 0.});
+                           Speed::per_second(b.vertices, b.seconds)});
     const Speed& speed = speeds.back();
     json << ", \"output_vertices_per_second\": {\"meshing_stage\": " << speed.rate(speed.stage)
          << ", \"planar_meshing_and_pull_back\": " << speed.rate(speed.planar + speed.pull_back)
@@ -361,7 +363,7 @@ int main(int argc, char** argv)
                "and its thousands of output vertices per second; planar, optim, pull: thread seconds of the planar "
                "meshing, the optimization on the surface and the pull-back, summed over patches; k/s p+pull: output "
                "vertices per thread second of planar meshing and pull-back alone; iso k/s: isotropic_remeshing's thousands of "
-               "output vertices per wall second, the pace of the machine in this run)\n";
+               "output vertices per wall second on the model, to compare runs as the machine's pace drifts)\n";
   if(!mesh_directory.empty())
     std::cout << "meshes: " << mesh_directory << "\n";
   try
