@@ -37,17 +37,24 @@ bool link_triangles(const std::vector<std::array<int, 3> >& triangles, std::vect
   for(const auto& t : triangles)
     for(int v : t)
       vertices = (std::max)(vertices, std::uint32_t(v) + 1);
+  // the ends of half-edge h, smaller first (by value: std::minmax's references would dangle)
+  auto ends = [&](std::uint32_t h) -> std::pair<std::uint32_t, std::uint32_t> {
+    const std::uint32_t a = std::uint32_t(corner(h, 1)), b = std::uint32_t(corner(h, 2));
+    return a < b ? std::make_pair(a, b) : std::make_pair(b, a);
+  };
   std::vector<std::uint32_t> start(std::size_t(vertices) + 1, 0);
   for(std::uint32_t h = 0; h < 3 * nt; ++h)
-    ++start[std::size_t((std::min)(corner(h, 1), corner(h, 2))) + 1];
+    ++start[std::size_t(ends(h).first) + 1];
   for(std::size_t v = 1; v < start.size(); ++v)
     start[v] += start[v - 1];
   std::vector<std::pair<std::uint32_t, std::uint32_t> > half_edges(3 * nt); // larger vertex, half-edge
   {
     std::vector<std::uint32_t> filled(start.begin(), start.end() - 1);
     for(std::uint32_t h = 0; h < 3 * nt; ++h)
-      half_edges[filled[std::size_t((std::min)(corner(h, 1), corner(h, 2)))]++] =
-        std::make_pair(std::uint32_t((std::max)(corner(h, 1), corner(h, 2))), h);
+    {
+      const std::pair<std::uint32_t, std::uint32_t> e = ends(h);
+      half_edges[filled[e.first]++] = std::make_pair(e.second, h);
+    }
   }
   for(std::uint32_t a = 0; a < vertices; ++a)
   {
