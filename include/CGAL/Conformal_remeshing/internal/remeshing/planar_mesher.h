@@ -18,12 +18,14 @@
 #include <CGAL/Mesh_2/Refine_edges.h>
 #include <CGAL/Mesh_2/Refine_faces.h>
 
+#include <array>
 #include <cmath>
 #include <functional>
 #include <list>
 #include <map>
 #include <memory>
 #include <set>
+#include <type_traits>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -109,6 +111,22 @@ inline std::vector<Boundary_sample> resample_loop(const std::vector<Domain_point
   return samples;
 }
 
+/// Where a size field found a point, for a query nearby to start from (an index the field
+/// defines: the remesher's is a flat triangle).
+typedef std::size_t Size_field_hint;
+constexpr Size_field_hint no_size_field_hint = Size_field_hint(-1);
+
+/// The size field at `p`: `size(p, hint)` when the field takes a hint (it starts its search from
+/// `hint` and sets it to where it found `p`), else `size(p)`.
+template <typename Size_field>
+double size_field_at(const Size_field& size, const Epick::Point_2& p, Size_field_hint& hint)
+{
+  if constexpr(std::is_invocable_r_v<double, const Size_field&, const Epick::Point_2&, Size_field_hint&>)
+    return size(p, hint);
+  else
+    return size(p);
+}
+
 /// Mesh_2 criteria: CGAL's shape bound, and a size bound given by a size field on the plane:
 /// a triangle is too big when its longest edge exceeds the field at its centroid, or when an
 /// edge is longer than the field along it, integrated by the trapezoidal rule over its ends.
@@ -125,12 +143,20 @@ inline std::vector<Boundary_sample> resample_loop(const std::vector<Domain_point
 /// so each vertex came back about 25 times (1.8 million evaluations for the 54k output vertices
 /// of the shield, each a point location among the slivers of the flattened input), 0.8 million
 /// evaluations with the corners remembered.
+/// A field that takes a hint (see `size_field_at()`) is asked about a face's new corner and its
+/// centroid from where it found a corner known before: the refinement takes its bad faces by
+/// quality, not by place, so the last query's place was anywhere.
 template <typename CDT, typename Size_field>
 class Size_field_criteria_2 : public CGAL::Delaunay_mesh_size_criteria_2<CDT>
 {
   typedef CGAL::Delaunay_mesh_size_criteria_2<CDT> Base;
 
-  typedef std::unordered_map<std::pair<double, double>, double, Planar_point_hash> Corner_sizes;
+  struct Corner_size
+  {
+    double size;
+    Size_field_hint hint;
+  };
+  typedef std::unordered_map<std::pair<double, double>, Corner_size, Planar_point_hash> Corner_sizes;
 
 public:
   typedef typename Base::Quality Quality;
@@ -159,14 +185,16 @@ public:
       const Epick::Point_2 a = to_epick(fh->vertex(0)->point()), b = to_epick(fh->vertex(1)->point()),
                            c = to_epick(fh->vertex(2)->point());
       const double longest = (std::max)({CGAL::squared_distance(a, b), CGAL::squared_distance(b, c), CGAL::squared_distance(c, a)});
-      const double target = size_(Epick::Point_2((a.x() + b.x() + c.x()) / 3., (a.y() + b.y() + c.y()) / 3.));
+      Size_field_hint near = no_size_field_hint;
+      const std::array<double, 3> size = corner_sizes({{a, b, c}}, near);
+      const double size_a = size[0], size_b = size[1], size_c = size[2];
+      const double target = size_field_at(size_, Epick::Point_2((a.x() + b.x() + c.x()) / 3., (a.y() + b.y() + c.y()) / 3.), near);
       // Each edge's squared length in units of the field, by the trapezoidal rule on 1/size
       // along it: (L (1/s + 1/t) / 2)^2, written so that a constant field gives exactly the
       // centroid's bound (refinements are not to differ by rounding where the field is flat).
       const auto in_field_units = [](double squared_length, double s, double t) {
         return squared_length / (s * t) * (CGAL::square(s + t) / (4. * (s * t)));
       };
-      const double size_a = corner_size(a), size_b = corner_size(b), size_c = corner_size(c);
       const double along = (std::max)({in_field_units(CGAL::squared_distance(a, b), size_a, size_b),
                                        in_field_units(CGAL::squared_distance(b, c), size_b, size_c),
                                        in_field_units(CGAL::squared_distance(c, a), size_c, size_a)});
@@ -178,12 +206,32 @@ public:
     template <typename P>
     static Epick::Point_2 to_epick(const P& p) { return Epick::Point_2(CGAL::to_double(p.x()), CGAL::to_double(p.y())); }
 
-    double corner_size(const Epick::Point_2& p) const
+    // The field at the corners, those known before first: a new corner is then searched for from
+    // where a known one was found, and `near` becomes where the last corner was.
+    std::array<double, 3> corner_sizes(const std::array<Epick::Point_2, 3>& corner, Size_field_hint& near) const
     {
-      const auto known = corner_sizes_->emplace(std::make_pair(p.x(), p.y()), 0.);
-      if(known.second)
-        known.first->second = size_(p);
-      return known.first->second;
+      std::array<Corner_size*, 3> known{{nullptr, nullptr, nullptr}};
+      for(int c = 0; c < 3; ++c)
+      {
+        const auto found = corner_sizes_->find(std::make_pair(corner[c].x(), corner[c].y()));
+        if(found != corner_sizes_->end())
+        {
+          known[c] = &found->second;
+          near = found->second.hint;
+        }
+      }
+      std::array<double, 3> size;
+      for(int c = 0; c < 3; ++c)
+      {
+        if(known[c] == nullptr) // a reference into an unordered_map stays valid as it grows
+        {
+          known[c] = &corner_sizes_->emplace(std::make_pair(corner[c].x(), corner[c].y()), Corner_size{0., near}).first->second;
+          known[c]->size = size_field_at(size_, corner[c], known[c]->hint);
+          near = known[c]->hint;
+        }
+        size[c] = known[c]->size;
+      }
+      return size;
     }
 
     Size_field size_;
