@@ -601,6 +601,29 @@ TEST(ThinPatches, ShortFeatureChainsInsideAPatchAreDropped)
   }
 }
 
+TEST(ThinPatches, ShortChainsThatTurnSharplyAreKept)
+{
+  // A flat square with a small tent: the three grid vertices at y = 0.5, x = 0.475 to 0.525,
+  // raised by `height`. With features at 80 degrees its ridge is a chain of sharp edges far
+  // shorter than 10 snap distances (0.5), and its foot is not. The ridge turns by 2 atan(height /
+  // 0.025): 126.9 degrees at height 0.05, a detail kept; 85 degrees at 0.0229, a wrinkle dropped.
+  for(const double height : {0.05, 0.0229})
+  {
+    Mesh square;
+    CGAL::make_grid(40, 40, square, [&](int i, int j) {
+      return K::Point_3(i / 40., j / 40., j == 20 && i >= 19 && i <= 21 ? height : 0.);
+    }, true);
+    CR::Poly_annulus_segmentation s;
+    CR::segment_into_poly_annuli(square, s, CR::parameters::snap_distance(0.05, CR::parameters::features_angle(80.)));
+    std::size_t ridge = 0;
+    for(auto e : s.mesh.edges())
+      ridge += CR::internal::segmentation::dihedral_turn(s.mesh, e) > 80.;
+    EXPECT_EQ(ridge, 2u) << height;
+    EXPECT_EQ(s.number_of_patches, 1u) << height;
+    EXPECT_EQ(s.dangling_feature_edges, height > 0.03 ? 2u : 0u) << height;
+  }
+}
+
 TEST(ThinPatches, CurvesOfChordsThatCannotGlueAreSampledMoreDensely)
 {
   namespace R = CR::internal::remeshing;
