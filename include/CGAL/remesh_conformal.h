@@ -379,7 +379,8 @@ private:
 
 // The refinement's size bound at a planar point: `longest_edge_factor` times the target edge
 // length on the surface there times the map's scale there. Takes a hint, the flat triangle to
-// search from (see `size_field_at()`); without one, it searches from the last point's.
+// search from (see `size_field_at()`); asked without one, it searches from where the last such
+// query was found.
 class Planar_size_field
 {
 public:
@@ -389,7 +390,7 @@ public:
   {}
 
   /// The target edge length at `p` on the surface, and the map's scale there.
-  std::pair<double, double> size_and_scale(const Epick::Point_2& p, std::size_t& hint) const
+  std::pair<double, double> size_and_scale(const Epick::Point_2& p, Size_field_hint& hint) const
   {
     const Planar_locator::Location l = locator_.locate(p, hint);
     double s = 0.;
@@ -404,7 +405,7 @@ public:
     return std::make_pair(size, s);
   }
 
-  double operator()(const Epick::Point_2& p, std::size_t& hint) const
+  double operator()(const Epick::Point_2& p, Size_field_hint& hint) const
   {
     const std::pair<double, double> size = size_and_scale(p, hint);
     return longest_edge_factor * size.first * size.second;
@@ -418,7 +419,7 @@ private:
   const Extracted_patch& patch_;
   const Sizing& sizing_;
   const Planar_locator& locator_;
-  mutable std::size_t last_hint_ = Planar_locator::no_hint;
+  mutable Size_field_hint last_hint_ = no_size_field_hint;
 };
 
 // Planar Delaunay refinement of a flattened patch with the shared boundary samples, then the
@@ -474,7 +475,7 @@ inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, c
     return !lifted.clamped;
   };
   std::vector<Planar_seed> seeds = equilateral_seeds(loops, on_kept_curve, surface_point, seed_layers);
-  std::size_t tip_hint = Planar_locator::no_hint;
+  Size_field_hint tip_hint = no_size_field_hint;
   const auto target_lengths = [&](const Epick::Point_2& p) {
     const std::pair<double, double> size = planar_size.size_and_scale(p, tip_hint);
     return std::make_pair(size.first, size.first * size.second);
