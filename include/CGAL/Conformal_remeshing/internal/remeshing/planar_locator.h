@@ -89,7 +89,7 @@ public:
         int k = int(std::min_element(b.begin(), b.end()) - b.begin());
         if(b[k] >= 0.)
         {
-          b = barycentric(t, p);
+          b = coordinates(t, b);
           k = int(std::min_element(b.begin(), b.end()) - b.begin());
           if(b[k] >= 0.)
           {
@@ -215,14 +215,16 @@ private:
              (a.x() - p.x()) * (b.y() - p.y()) - (a.y() - p.y()) * (b.x() - p.x())}};
   }
 
-  std::array<double, 3> barycentric(std::size_t t, const Point_2& p) const
+  // The barycentric coordinates in triangle `t` of the point with these `side_areas()`.
+  std::array<double, 3> coordinates(std::size_t t, const std::array<double, 3>& side) const
   {
     const Point_2 &a = points_[triangles_[t][0]], &b = points_[triangles_[t][1]], &c = points_[triangles_[t][2]];
     const double area = (b.x() - a.x()) * (c.y() - a.y()) - (b.y() - a.y()) * (c.x() - a.x());
-    const double wa = ((b.x() - p.x()) * (c.y() - p.y()) - (b.y() - p.y()) * (c.x() - p.x())) / area;
-    const double wb = ((c.x() - p.x()) * (a.y() - p.y()) - (c.y() - p.y()) * (a.x() - p.x())) / area;
+    const double wa = side[0] / area, wb = side[1] / area;
     return {{wa, wb, 1. - wa - wb}};
   }
+
+  std::array<double, 3> barycentric(std::size_t t, const Point_2& p) const { return coordinates(t, side_areas(t, p)); }
 
   const std::vector<Point_2>& points_;
   const std::vector<std::array<int, 3> >& triangles_;

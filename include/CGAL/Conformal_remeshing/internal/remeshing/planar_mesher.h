@@ -210,26 +210,28 @@ public:
     // where a known one was found, and `near` becomes where the last corner was.
     std::array<double, 3> corner_sizes(const std::array<Epick::Point_2, 3>& corner, Size_field_hint& near) const
     {
-      std::array<Corner_size*, 3> known{{nullptr, nullptr, nullptr}};
+      // One lookup per corner (try_emplace allocates only for a new one); a reference into an
+      // unordered_map stays valid as it grows.
+      std::array<Corner_size*, 3> entry;
+      std::array<bool, 3> is_new;
       for(int c = 0; c < 3; ++c)
       {
-        const auto found = corner_sizes_->find(std::make_pair(corner[c].x(), corner[c].y()));
-        if(found != corner_sizes_->end())
-        {
-          known[c] = &found->second;
-          near = found->second.hint;
-        }
+        const auto inserted = corner_sizes_->try_emplace(std::make_pair(corner[c].x(), corner[c].y()), Corner_size{0., no_size_field_hint});
+        entry[c] = &inserted.first->second;
+        is_new[c] = inserted.second;
+        if(!is_new[c])
+          near = entry[c]->hint;
       }
       std::array<double, 3> size;
       for(int c = 0; c < 3; ++c)
       {
-        if(known[c] == nullptr) // a reference into an unordered_map stays valid as it grows
+        if(is_new[c])
         {
-          known[c] = &corner_sizes_->emplace(std::make_pair(corner[c].x(), corner[c].y()), Corner_size{0., near}).first->second;
-          known[c]->size = size_field_at(size_, corner[c], known[c]->hint);
-          near = known[c]->hint;
+          entry[c]->hint = near;
+          entry[c]->size = size_field_at(size_, corner[c], entry[c]->hint);
+          near = entry[c]->hint;
         }
-        size[c] = known[c]->size;
+        size[c] = entry[c]->size;
       }
       return size;
     }
