@@ -41,7 +41,6 @@
 #include <sstream>
 #include <string>
 #include <type_traits>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -352,29 +351,26 @@ public:
 
   /// The lift of `p`; `near` (optional) is a point lifted before close to `p`: the walk that
   /// locates `p` in the flat triangles starts from its triangle (else from the last point's).
-  const Lifted& lift(const Epick::Point_2& p, const Epick::Point_2* near = nullptr)
+  Lifted lift(const Epick::Point_2& p, const Epick::Point_2* near = nullptr)
   {
-    const auto inserted = lifted_.emplace(std::make_pair(p.x(), p.y()), Lifted());
+    const auto inserted = lifted_.try_emplace(p, Lifted());
     if(inserted.second)
     {
       if(near != nullptr)
-      {
-        const auto known = lifted_.find(std::make_pair(near->x(), near->y()));
-        if(known != lifted_.end())
-          hint_ = known->second.triangle;
-      }
+        if(const Lifted* known = lifted_.find(*near))
+          hint_ = known->triangle;
       const Planar_locator::Location l = locator_.locate(p, hint_);
-      inserted.first->second = Lifted{flat_.patch_location_of_triangle(l.triangle, l.coordinates),
-                                      (std::min)({l.coordinates[0], l.coordinates[1], l.coordinates[2]}) == 0., l.triangle};
+      *inserted.first = Lifted{flat_.patch_location_of_triangle(l.triangle, l.coordinates),
+                               (std::min)({l.coordinates[0], l.coordinates[1], l.coordinates[2]}) == 0., l.triangle};
     }
-    return inserted.first->second;
+    return *inserted.first;
   }
 
 private:
   const Conformal_flattening& flat_;
   const Planar_locator& locator_;
   std::size_t hint_ = Planar_locator::no_hint; // the last point's triangle: lifts come in neighbourhoods
-  std::unordered_map<std::pair<double, double>, Lifted, Planar_point_hash> lifted_;
+  Planar_point_map<Lifted> lifted_;
 };
 
 // The refinement's size bound at a planar point: `longest_edge_factor` times the target edge
@@ -470,7 +466,7 @@ inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, c
   Remembering_surface_map surface_map(flat, locator);
   const auto on_kept_curve = [&](const Boundary_sample& a, const Boundary_sample& b) { return samples.is_kept_chord(a.id, b.id); };
   const auto surface_point = [&](const Epick::Point_2& p, Epick::Point_3& x) {
-    const Remembering_surface_map::Lifted& lifted = surface_map.lift(p);
+    const Remembering_surface_map::Lifted lifted = surface_map.lift(p);
     x = flat.surface_point(lifted.on_patch);
     return !lifted.clamped;
   };
@@ -520,7 +516,7 @@ inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, c
   start = Clock::now();
   for(std::size_t i = planar.number_of_samples; i < planar.points.size(); ++i)
   {
-    const Remembering_surface_map::Lifted& lifted = surface_map.lift(planar.points[i]);
+    const Remembering_surface_map::Lifted lifted = surface_map.lift(planar.points[i]);
     const Domain_point q = flat.to_surface(lifted.on_patch);
     result.clamped_vertices += lifted.clamped;
     result.interior_points.push_back(q.point);

@@ -1023,6 +1023,51 @@ TEST(PlanarMesher, PointAtSurfaceDistanceIsTheBisectionsPointInFewerLifts)
   EXPECT_LT(2 * new_lifts, plain_lifts) << new_lifts << " lifts against " << plain_lifts;
 }
 
+TEST(PlanarPointMap, FindsEveryPointItWasGivenAndNoOther)
+{
+  // 200k points on a grid and at random, in three rounds of growth from the 16 initial slots;
+  // then the values of the first ones, a point never inserted, and -0. against 0.
+  typedef CGAL::Epick::Point_2 P;
+  RM::Planar_point_map<std::size_t> map;
+  std::vector<P> points;
+  std::mt19937 random(5);
+  std::uniform_real_distribution<double> coordinate(-1., 1.);
+  for(int i = 0; i < 300; ++i)
+    for(int j = 0; j < 300; ++j)
+      points.emplace_back(i * 0.01, j * 0.01); // rows of equal x and columns of equal y
+  while(points.size() < 200000)
+    points.emplace_back(coordinate(random), coordinate(random));
+  std::size_t inserted = 0;
+  for(std::size_t i = 0; i < points.size(); ++i)
+  {
+    const auto r = map.try_emplace(points[i], i);
+    inserted += r.second;
+    if(r.second)
+      ASSERT_EQ(*r.first, i);
+    else
+      ASSERT_EQ(points[*r.first], points[i]); // the value of the same point, inserted before
+  }
+  EXPECT_EQ(inserted, map.size());
+  EXPECT_GT(inserted, 199000u); // random points rarely repeat
+  for(std::size_t i = 0; i < points.size(); ++i)
+  {
+    const std::size_t* value = map.find(points[i]);
+    ASSERT_NE(value, nullptr);
+    EXPECT_EQ(points[*value], points[i]); // the first insertion of that point kept its value
+    EXPECT_LE(*value, i);
+  }
+  EXPECT_EQ(map.find(P(-3., 7.)), nullptr);
+  EXPECT_EQ(map.find(P(0.005, 0.)), nullptr);
+  EXPECT_FALSE(map.try_emplace(P(-0., 0.), 7).second); // the grid's (0, 0)
+  EXPECT_EQ(*map.find(P(0., -0.)), 0u);
+  // After reserve(), pointers stay valid over that many insertions.
+  map.reserve(map.size() + 3);
+  std::size_t* first = map.try_emplace(P(3., 3.), 1).first;
+  map.try_emplace(P(4., 4.), 2);
+  map.try_emplace(P(5., 5.), 3);
+  EXPECT_EQ(first, map.find(P(3., 3.)));
+}
+
 TEST(TriangleAdjacency, LinksTwinsVisitsEachEdgeOnceInOrderAndRefusesNonManifoldEdges)
 {
   // A 9 x 7 grid of squares cut into triangles, its vertex indices shuffled: every interior edge

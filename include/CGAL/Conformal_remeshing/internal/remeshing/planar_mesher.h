@@ -27,6 +27,8 @@
 #include <set>
 #include <type_traits>
 #include <unordered_map>
+#include <cstdint>
+#include <cstring>
 #include <utility>
 #include <vector>
 
@@ -35,13 +37,112 @@ namespace Conformal_remeshing {
 namespace internal {
 namespace remeshing {
 
-/// Hash of a planar point's coordinates, for the maps that remember what was computed at a point.
-struct Planar_point_hash
+/// A map from planar points to what was computed there, for the searches that remember their
+/// answers (the size field at the refinement's corners, the lifts of the optimizer's points).
+/// The entries lie in one array in the order they came, which is by neighbourhood, and the table
+/// that finds them, open addressing with linear probing, holds 8 bytes a slot: the entry's
+/// number and bits of its hash, so that a probe rarely opens an entry that is not the one. It
+/// replaces `std::unordered_map`, whose lookups followed a bucket to a node in the heap and
+/// divided by a prime. Keys compare with `==` (-0. equals 0.); no point is NaN. Pointers to values
+/// stay valid until an insertion finds the map full; `reserve()` first to keep them over several.
+template <typename Value>
+class Planar_point_map
 {
-  std::size_t operator()(const std::pair<double, double>& p) const
+public:
+  Planar_point_map() { rehash(16); }
+
+  /// The value at `p`, or null.
+  Value* find(const Epick::Point_2& p)
   {
-    return std::hash<double>()(p.first) ^ (std::hash<double>()(p.second) * 0x9e3779b97f4a7c15ull);
+    const std::uint64_t h = hash(p.x(), p.y());
+    for(std::size_t i = std::size_t(h >> shift_);; i = (i + 1) & mask_)
+    {
+      const Slot s = slots_[i];
+      if(s.entry == 0)
+        return nullptr;
+      if(s.tag == std::uint32_t(h) && entries_[s.entry - 1].x == p.x() && entries_[s.entry - 1].y == p.y())
+        return &entries_[s.entry - 1].value;
+    }
   }
+
+  /// The value at `p` and `true` if it was inserted as `value` now, `false` if it was there.
+  std::pair<Value*, bool> try_emplace(const Epick::Point_2& p, const Value& value)
+  {
+    reserve(entries_.size() + 1);
+    const std::uint64_t h = hash(p.x(), p.y());
+    std::size_t i = std::size_t(h >> shift_);
+    for(; slots_[i].entry != 0; i = (i + 1) & mask_)
+      if(slots_[i].tag == std::uint32_t(h) && entries_[slots_[i].entry - 1].x == p.x() && entries_[slots_[i].entry - 1].y == p.y())
+        return {&entries_[slots_[i].entry - 1].value, false};
+    entries_.push_back(Entry{p.x(), p.y(), value});
+    slots_[i] = Slot{std::uint32_t(entries_.size()), std::uint32_t(h)};
+    return {&entries_.back().value, true};
+  }
+
+  /// Room for `n` points without moving the values (at most half the slots used).
+  void reserve(std::size_t n)
+  {
+    if(n > entries_.capacity())
+      entries_.reserve((std::max)(n, 2 * entries_.capacity()));
+    if(2 * n > slots_.size())
+    {
+      std::size_t capacity = slots_.size();
+      while(2 * n > capacity)
+        capacity *= 2;
+      rehash(capacity);
+    }
+  }
+
+  std::size_t size() const { return entries_.size(); }
+
+private:
+  struct Slot
+  {
+    std::uint32_t entry; // 1 + the entry's index, 0 when the slot is free
+    std::uint32_t tag;   // the low bits of the entry's hash
+  };
+  struct Entry
+  {
+    double x, y;
+    Value value;
+  };
+
+  // A multiply-xorshift mix of the coordinates' bits, whose top bits choose the slot (+0. turns
+  // -0. into 0., which compares equal).
+  static std::uint64_t hash(double x, double y)
+  {
+    const std::uint64_t h = (bits(x) * 0x9e3779b97f4a7c15ull) ^ (bits(y) * 0xc2b2ae3d27d4eb4full);
+    return (h ^ (h >> 32)) * 0xbf58476d1ce4e5b9ull;
+  }
+  static std::uint64_t bits(double d)
+  {
+    d += 0.;
+    std::uint64_t b;
+    std::memcpy(&b, &d, sizeof b);
+    return b;
+  }
+
+  void rehash(std::size_t capacity)
+  {
+    slots_.assign(capacity, Slot{0, 0});
+    mask_ = capacity - 1;
+    shift_ = 64;
+    for(std::size_t c = capacity; c > 1; c /= 2)
+      --shift_;
+    for(std::size_t e = 0; e < entries_.size(); ++e)
+    {
+      const std::uint64_t h = hash(entries_[e].x, entries_[e].y);
+      std::size_t i = std::size_t(h >> shift_);
+      while(slots_[i].entry != 0)
+        i = (i + 1) & mask_;
+      slots_[i] = Slot{std::uint32_t(e + 1), std::uint32_t(h)};
+    }
+  }
+
+  std::vector<Slot> slots_;
+  std::vector<Entry> entries_;
+  std::size_t mask_ = 0;
+  int shift_ = 64;
 };
 
 /// A boundary sample: its planar position and the surface point it stands for.
@@ -156,7 +257,7 @@ class Size_field_criteria_2 : public CGAL::Delaunay_mesh_size_criteria_2<CDT>
     double size;
     Size_field_hint hint;
   };
-  typedef std::unordered_map<std::pair<double, double>, Corner_size, Planar_point_hash> Corner_sizes;
+  typedef Planar_point_map<Corner_size> Corner_sizes;
 
 public:
   typedef typename Base::Quality Quality;
@@ -210,14 +311,14 @@ public:
     // where a known one was found, and `near` becomes where the last corner was.
     std::array<double, 3> corner_sizes(const std::array<Epick::Point_2, 3>& corner, Size_field_hint& near) const
     {
-      // One lookup per corner (try_emplace allocates only for a new one); a reference into an
-      // unordered_map stays valid as it grows.
+      // One lookup per corner, with room for three new ones first: the pointers stay valid.
       std::array<Corner_size*, 3> entry;
       std::array<bool, 3> is_new;
+      corner_sizes_->reserve(corner_sizes_->size() + 3);
       for(int c = 0; c < 3; ++c)
       {
-        const auto inserted = corner_sizes_->try_emplace(std::make_pair(corner[c].x(), corner[c].y()), Corner_size{0., no_size_field_hint});
-        entry[c] = &inserted.first->second;
+        const auto inserted = corner_sizes_->try_emplace(corner[c], Corner_size{0., no_size_field_hint});
+        entry[c] = inserted.first;
         is_new[c] = inserted.second;
         if(!is_new[c])
           near = entry[c]->hint;
