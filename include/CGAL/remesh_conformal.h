@@ -26,6 +26,9 @@
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
+#include <CGAL/Spatial_sort_traits_adapter_2.h>
+#include <CGAL/property_map.h>
+#include <CGAL/spatial_sort.h>
 #include <CGAL/tags.h>
 #include <CGAL/boost/graph/Euler_operations.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -35,6 +38,7 @@
 #include <cmath>
 #include <functional>
 #include <iterator>
+#include <limits>
 #include <map>
 #include <numeric>
 #include <set>
@@ -333,44 +337,54 @@ inline Glue_check check_glue(const std::vector<std::vector<Boundary_sample> >& l
   return result;
 }
 
-// The plane-to-surface map of a flattened patch, keeping where it carried each planar point: the
-// optimizer lifts every point it tries and the pull-back then carries the final points, which
-// were all lifted before (each carriage walks back through the flow's flips: on CAD parts most of
-// the meshing stage).
-class Remembering_surface_map
+// The plane-to-surface map of a flattened patch. Each lift locates its point among the flat
+// triangles by a walk, from where a point lifted before close by was found, then carries it back
+// through the flow's flips. Where points were found is remembered in a small direct-mapped
+// table of the last lifts (a point whose entry was overwritten starts from the last point's
+// triangle: a longer walk, the same answer). It replaced a memory of every lift (250k on the
+// shark), whose lookups cost more than the lifts they saved: the optimizer's split passes, which
+// lifted most points again, remember their edges' midpoints themselves.
+class Surface_map_with_hints
 {
 public:
   struct Lifted
   {
     Conformal_flattening::Patch_location on_patch;
     bool clamped; // outside every flat triangle by rounding, moved onto the nearest one
-    std::size_t triangle; // the flat triangle it was located in
   };
 
-  Remembering_surface_map(const Conformal_flattening& flat, const Planar_locator& locator) : flat_(flat), locator_(locator) {}
+  Surface_map_with_hints(const Conformal_flattening& flat, const Planar_locator& locator)
+    : flat_(flat), locator_(locator), found_(std::size_t(1) << found_bits)
+  {}
 
-  /// The lift of `p`; `near` (optional) is a point lifted before close to `p`: the walk that
-  /// locates `p` in the flat triangles starts from its triangle (else from the last point's).
+  /// The lift of `p`; `near` (optional) is a point lifted before close to `p`.
   Lifted lift(const Epick::Point_2& p, const Epick::Point_2* near = nullptr)
   {
-    const auto inserted = lifted_.try_emplace(p, Lifted());
-    if(inserted.second)
+    if(near != nullptr)
     {
-      if(near != nullptr)
-        if(const Lifted* known = lifted_.find(*near))
-          hint_ = known->triangle;
-      const Planar_locator::Location l = locator_.locate(p, hint_);
-      *inserted.first = Lifted{flat_.patch_location_of_triangle(l.triangle, l.coordinates),
-                               (std::min)({l.coordinates[0], l.coordinates[1], l.coordinates[2]}) == 0., l.triangle};
+      const Found& f = found_[slot(*near)];
+      if(f.x == near->x() && f.y == near->y())
+        hint_ = f.triangle;
     }
-    return *inserted.first;
+    const Planar_locator::Location l = locator_.locate(p, hint_);
+    found_[slot(p)] = Found{p.x(), p.y(), l.triangle};
+    return Lifted{flat_.patch_location_of_triangle(l.triangle, l.coordinates),
+                  (std::min)({l.coordinates[0], l.coordinates[1], l.coordinates[2]}) == 0.};
   }
 
 private:
+  struct Found
+  {
+    double x = std::numeric_limits<double>::quiet_NaN(), y = 0.; // NaN: no point yet
+    std::size_t triangle = 0;
+  };
+  static constexpr int found_bits = 12; // 4096 entries, 96 kB
+  static std::size_t slot(const Epick::Point_2& p) { return std::size_t(planar_point_hash(p.x(), p.y()) >> (64 - found_bits)); }
+
   const Conformal_flattening& flat_;
   const Planar_locator& locator_;
+  std::vector<Found> found_;
   std::size_t hint_ = Planar_locator::no_hint; // the last point's triangle: lifts come in neighbourhoods
-  Planar_point_map<Lifted> lifted_;
 };
 
 // The refinement's size bound at a planar point: `longest_edge_factor` times the target edge
@@ -463,10 +477,10 @@ inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, c
   // The first rows of triangles along features, borders and user patch borders are seeded (see
   // equilateral_seeds()); along cuts the points move after gluing instead (moves_after_gluing.h).
   // So is the first ring around each kept tip (see seeds_around_points()).
-  Remembering_surface_map surface_map(flat, locator);
+  Surface_map_with_hints surface_map(flat, locator);
   const auto on_kept_curve = [&](const Boundary_sample& a, const Boundary_sample& b) { return samples.is_kept_chord(a.id, b.id); };
   const auto surface_point = [&](const Epick::Point_2& p, Epick::Point_3& x) {
-    const Remembering_surface_map::Lifted lifted = surface_map.lift(p);
+    const Surface_map_with_hints::Lifted lifted = surface_map.lift(p);
     x = flat.surface_point(lifted.on_patch);
     return !lifted.clamped;
   };
@@ -489,6 +503,15 @@ inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, c
 
   // Flips and moves judged on the surface (see surface_optimization.h). The surface positions are
   // the optimizer's working state only: the pull-back below finds the final points' input faces.
+  // The refinement numbers its points in the order it inserted them, worst triangle first: lifted
+  // in that order, each walk would start far from its point.
+  const auto interior_points_in_space_order = [&planar]() {
+    std::vector<std::size_t> order(planar.points.size() - planar.number_of_samples);
+    std::iota(order.begin(), order.end(), planar.number_of_samples);
+    const auto point_of_index = CGAL::make_property_map(planar.points);
+    CGAL::spatial_sort(order.begin(), order.end(), CGAL::Spatial_sort_traits_adapter_2<Epick, decltype(point_of_index)>(point_of_index));
+    return order;
+  };
   start = Clock::now();
   if(optimization_rounds > 0)
   {
@@ -496,9 +519,9 @@ inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, c
       return flat.surface_point(surface_map.lift(p, &near).on_patch);
     };
     std::vector<Epick::Point_3> positions(sample_points); // the samples, in loop order, first
-    positions.reserve(planar.points.size());
-    for(std::size_t i = planar.number_of_samples; i < planar.points.size(); ++i)
-      positions.push_back(flat.surface_point(surface_map.lift(planar.points[i]).on_patch));
+    positions.resize(planar.points.size());
+    for(std::size_t i : interior_points_in_space_order())
+      positions[i] = flat.surface_point(surface_map.lift(planar.points[i]).on_patch);
     Edge_split_bounds split_bounds;
     split_bounds.longest = split_edge_factor * sizing.target();
     split_bounds.across_bend = {shortest_off_surface_split_factor * sizing.target(), off_surface_split_factor * sizing.target()};
@@ -514,13 +537,15 @@ inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, c
   result.sample_diagonals = check_glue(loops, planar, result.boundary_ids, samples).sample_diagonals;
 
   start = Clock::now();
-  for(std::size_t i = planar.number_of_samples; i < planar.points.size(); ++i)
+  result.interior_points.resize(planar.points.size() - planar.number_of_samples);
+  result.interior_faces.resize(result.interior_points.size());
+  for(std::size_t i : interior_points_in_space_order())
   {
-    const Remembering_surface_map::Lifted lifted = surface_map.lift(planar.points[i]);
+    const Surface_map_with_hints::Lifted lifted = surface_map.lift(planar.points[i]);
     const Domain_point q = flat.to_surface(lifted.on_patch);
     result.clamped_vertices += lifted.clamped;
-    result.interior_points.push_back(q.point);
-    result.interior_faces.push_back(patch.segmented_face[q.input_face]);
+    result.interior_points[i - planar.number_of_samples] = q.point;
+    result.interior_faces[i - planar.number_of_samples] = patch.segmented_face[q.input_face];
   }
   for(const auto& t : planar.triangles)
   {

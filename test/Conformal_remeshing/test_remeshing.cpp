@@ -521,6 +521,51 @@ TEST(SurfaceOptimization, SplitsTheEdgesThatCutUnderABend)
   EXPECT_LE(*std::max_element(gaps_after.begin(), gaps_after.end()), *std::max_element(gaps_before.begin(), gaps_before.end()));
 }
 
+TEST(SurfaceOptimization, SplitPassesLiftAMidpointAgainOnlyWhenAnEndMoved)
+{
+  // Split passes with a bound that names no chord: they lift the midpoints and split nothing.
+  const double h = 0.07, shortest = 0.9 * h;
+  Optimization_case c = square_with_hole(h, creased_lift);
+  std::size_t lifts = 0;
+  c.lift = [&lifts](const CGAL::Epick::Point_2& p) { ++lifts; return creased_lift(p); };
+  typedef RM::Surface_mesh_optimizer<Optimization_case> Optimizer;
+  Optimizer optimizer(c.points, c.positions, c.triangles, c, 28., 1.4 * h);
+  ASSERT_TRUE(optimizer.initialize(c.raw.number_of_samples));
+  run_rounds(optimizer, 2);
+  std::set<std::pair<int, int> > sides, inner_long_enough;
+  for(const auto& t : c.triangles)
+    for(int k = 0; k < 3; ++k)
+    {
+      const auto side = std::minmax(t[k], t[(k + 1) % 3]);
+      if(!sides.insert(side).second && CGAL::squared_distance(c.positions[side.first], c.positions[side.second]) > shortest * shortest)
+        inner_long_enough.insert(side);
+    }
+  RM::Edge_split_bounds bounds;
+  bounds.across_bend = {shortest, 10.}; // no chord stands 10 off
+  std::size_t chord_splits = 0;
+  lifts = 0;
+  ASSERT_EQ(optimizer.split_pass(bounds, chord_splits), 0u);
+  const std::size_t first = lifts;
+  EXPECT_GT(first, inner_long_enough.size() / 2);
+  EXPECT_LE(first, inner_long_enough.size()); // once per edge, not from both sides
+  lifts = 0;
+  optimizer.split_pass(bounds, chord_splits);
+  EXPECT_EQ(lifts, 0u); // nothing moved
+  const std::vector<CGAL::Epick::Point_2> before = c.points;
+  const std::size_t moves = optimizer.smoothing_pass();
+  ASSERT_GT(moves, 0u);
+  lifts = 0;
+  optimizer.split_pass(bounds, chord_splits);
+  std::set<std::pair<int, int> > edges_of_moved; // every edge with a moved end
+  for(const auto& t : c.triangles)
+    for(int k = 0; k < 3; ++k)
+      if(c.points[t[k]] != before[t[k]] || c.points[t[(k + 1) % 3]] != before[t[(k + 1) % 3]])
+        edges_of_moved.insert(std::minmax(t[k], t[(k + 1) % 3]));
+  EXPECT_GT(lifts, 0u);
+  EXPECT_LE(lifts, edges_of_moved.size());
+  EXPECT_LT(lifts, first) << moves << " moves";
+}
+
 // A cylinder of radius 2.5 h (h = 0.07) around the y axis, unrolled isometrically onto the plane:
 // the chord of an edge of length L across it stands about L^2 / (20 h) under the surface, 0.066 h
 // at 1.15 h, and nothing along it.

@@ -37,8 +37,22 @@ namespace Conformal_remeshing {
 namespace internal {
 namespace remeshing {
 
+/// A hash of a planar point: a multiply-xorshift mix of its coordinates' bits, whose top bits
+/// are the best mixed (+0. turns -0. into 0., as the two compare equal).
+inline std::uint64_t planar_point_hash(double x, double y)
+{
+  const auto bits = [](double d) {
+    d += 0.;
+    std::uint64_t b;
+    std::memcpy(&b, &d, sizeof b);
+    return b;
+  };
+  const std::uint64_t h = (bits(x) * 0x9e3779b97f4a7c15ull) ^ (bits(y) * 0xc2b2ae3d27d4eb4full);
+  return (h ^ (h >> 32)) * 0xbf58476d1ce4e5b9ull;
+}
+
 /// A map from planar points to what was computed there, for the searches that remember their
-/// answers (the size field at the refinement's corners, the lifts of the optimizer's points).
+/// answers (the size field at the refinement's corners).
 /// The entries lie in one array in the order they came, which is by neighbourhood, and the table
 /// that finds them, open addressing with linear probing, holds 8 bytes a slot: the entry's
 /// number and bits of its hash, so that a probe rarely opens an entry that is not the one. It
@@ -107,20 +121,8 @@ private:
     Value value;
   };
 
-  // A multiply-xorshift mix of the coordinates' bits, whose top bits choose the slot (+0. turns
-  // -0. into 0., which compares equal).
-  static std::uint64_t hash(double x, double y)
-  {
-    const std::uint64_t h = (bits(x) * 0x9e3779b97f4a7c15ull) ^ (bits(y) * 0xc2b2ae3d27d4eb4full);
-    return (h ^ (h >> 32)) * 0xbf58476d1ce4e5b9ull;
-  }
-  static std::uint64_t bits(double d)
-  {
-    d += 0.;
-    std::uint64_t b;
-    std::memcpy(&b, &d, sizeof b);
-    return b;
-  }
+  // The top bits of the hash choose the slot.
+  static std::uint64_t hash(double x, double y) { return planar_point_hash(x, y); }
 
   void rehash(std::size_t capacity)
   {

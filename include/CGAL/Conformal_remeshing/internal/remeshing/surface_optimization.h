@@ -172,6 +172,7 @@ public:
     forbidden_diagonals_ = forbidden_diagonals;
     const std::size_t nt = triangles_.size(), nv = points_.size();
     fixed_.assign(nv, 0);
+    moves_.assign(nv, 0);
     settled_.assign(nv, 0);
     valence_.assign(nv, 0);
     if(!link_triangles(triangles_, neighbor_, [&](int a, int b, bool interior) {
@@ -380,7 +381,7 @@ public:
         if(CGAL::orientation(points_[c], points_[a], m) != CGAL::POSITIVE || CGAL::orientation(points_[c], m, points_[b]) != CGAL::POSITIVE
            || CGAL::orientation(points_[d], points_[b], m) != CGAL::POSITIVE || CGAL::orientation(points_[d], m, points_[a]) != CGAL::POSITIVE)
           continue;
-        const Point_3 x = lift_(m, points_[a]);
+        const Point_3 x = lifted_midpoint(t, k, u, j, m);
         const bool off_surface = !too_long && bounds.names_chord(length_squared, CGAL::squared_distance(x, CGAL::midpoint(pa, pb)));
         if(!too_long && !off_surface)
           continue;
@@ -394,6 +395,23 @@ public:
         chord_splits += off_surface;
       }
     return splits;
+  }
+
+  // The surface point of the planar midpoint `m` of the edge opposite corner k of t, shared with
+  // corner j of u. The split passes look at every edge from both sides, and again in each pass: the
+  // point is lifted again only if an end of the edge moved (a lift walks back through the flow's
+  // flips; on the shark, five of six of these lifts were of a midpoint lifted before).
+  Point_3 lifted_midpoint(int t, int k, int u, int j, const Point_2& m)
+  {
+    const int a = vertex(t, k + 1), b = vertex(t, k + 2);
+    if(lifted_midpoints_.size() < 3 * triangles_.size())
+      lifted_midpoints_.resize(2 * 3 * triangles_.size());
+    for(const Lifted_midpoint& known : {lifted_midpoints_[3 * t + k], lifted_midpoints_[3 * u + j]})
+      if(std::minmax(known.a, known.b) == std::minmax(a, b) && known.moves_a == moves_[known.a] && known.moves_b == moves_[known.b])
+        return known.x;
+    const Lifted_midpoint lifted{a, b, moves_[a], moves_[b], lift_(m, points_[a])};
+    lifted_midpoints_[3 * t + k] = lifted_midpoints_[3 * u + j] = lifted;
+    return lifted.x;
   }
 
   /// From now on, no flip or move makes a chord that `bounds` names (see `split_pass()`), unless
@@ -643,6 +661,7 @@ private:
         return false;
     points_[v] = moved;
     positions_[v] = x;
+    ++moves_[v];
     unsettle(v);
     for(int w : ring)
       unsettle(w);
@@ -737,6 +756,7 @@ private:
     points_.push_back(p);
     positions_.push_back(x);
     fixed_.push_back(0);
+    moves_.push_back(0);
     settled_.push_back(0);
     valence_.push_back(4);
     target_.push_back(6);
@@ -780,6 +800,14 @@ private:
   std::vector<int> incident_, valence_, target_;
   std::vector<char> fixed_;
   std::vector<unsigned char> settled_;
+  std::vector<unsigned> moves_; // how many times each vertex moved
+  struct Lifted_midpoint
+  {
+    int a = -1, b = -1; // the edge's ends, when they had moved moves_a and moves_b times
+    unsigned moves_a = 0, moves_b = 0;
+    Point_3 x;
+  };
+  std::vector<Lifted_midpoint> lifted_midpoints_; // by half-edge, 3 t + k (see lifted_midpoint())
   std::vector<std::size_t> sample_ids_;
   std::set<std::pair<std::size_t, std::size_t> > forbidden_diagonals_;
 };
