@@ -20,6 +20,8 @@
 
 #include <array>
 #include <cmath>
+#include <cstdint>
+#include <cstring>
 #include <functional>
 #include <list>
 #include <map>
@@ -27,8 +29,6 @@
 #include <set>
 #include <type_traits>
 #include <unordered_map>
-#include <cstdint>
-#include <cstring>
 #include <utility>
 #include <vector>
 
