@@ -504,7 +504,8 @@ inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, c
   // Flips and moves judged on the surface (see surface_optimization.h). The surface positions are
   // the optimizer's working state only: the pull-back below finds the final points' input faces.
   // The refinement numbers its points in the order it inserted them, worst triangle first: lifted
-  // in that order, each walk would start far from its point.
+  // in that order, each walk would start far from its point. (Sorted again for the pull-back: the
+  // optimization moves points and adds some.)
   const auto interior_points_in_space_order = [&planar]() {
     std::vector<std::size_t> order(planar.points.size() - planar.number_of_samples);
     std::iota(order.begin(), order.end(), planar.number_of_samples);

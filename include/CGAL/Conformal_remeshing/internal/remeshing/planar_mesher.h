@@ -68,28 +68,20 @@ public:
   /// The value at `p`, or null.
   Value* find(const Epick::Point_2& p)
   {
-    const std::uint64_t h = hash(p.x(), p.y());
-    for(std::size_t i = std::size_t(h >> shift_);; i = (i + 1) & mask_)
-    {
-      const Slot s = slots_[i];
-      if(s.entry == 0)
-        return nullptr;
-      if(s.tag == std::uint32_t(h) && entries_[s.entry - 1].x == p.x() && entries_[s.entry - 1].y == p.y())
-        return &entries_[s.entry - 1].value;
-    }
+    const Slot s = slots_[slot_of(p, planar_point_hash(p.x(), p.y()))];
+    return s.entry == 0 ? nullptr : &entries_[s.entry - 1].value;
   }
 
   /// The value at `p` and `true` if it was inserted as `value` now, `false` if it was there.
   std::pair<Value*, bool> try_emplace(const Epick::Point_2& p, const Value& value)
   {
     reserve(entries_.size() + 1);
-    const std::uint64_t h = hash(p.x(), p.y());
-    std::size_t i = std::size_t(h >> shift_);
-    for(; slots_[i].entry != 0; i = (i + 1) & mask_)
-      if(slots_[i].tag == std::uint32_t(h) && entries_[slots_[i].entry - 1].x == p.x() && entries_[slots_[i].entry - 1].y == p.y())
-        return {&entries_[slots_[i].entry - 1].value, false};
+    const std::uint64_t h = planar_point_hash(p.x(), p.y());
+    Slot& s = slots_[slot_of(p, h)];
+    if(s.entry != 0)
+      return {&entries_[s.entry - 1].value, false};
     entries_.push_back(Entry{p.x(), p.y(), value});
-    slots_[i] = Slot{std::uint32_t(entries_.size()), std::uint32_t(h)};
+    s = Slot{std::uint32_t(entries_.size()), std::uint32_t(h)};
     return {&entries_.back().value, true};
   }
 
@@ -121,8 +113,16 @@ private:
     Value value;
   };
 
-  // The top bits of the hash choose the slot.
-  static std::uint64_t hash(double x, double y) { return planar_point_hash(x, y); }
+  // The slot that holds `p` (whose hash is `h`), or the free one where its probe ends: the
+  // probe starts at the slot the hash's top bits choose.
+  std::size_t slot_of(const Epick::Point_2& p, std::uint64_t h) const
+  {
+    std::size_t i = std::size_t(h >> shift_);
+    while(slots_[i].entry != 0
+          && !(slots_[i].tag == std::uint32_t(h) && entries_[slots_[i].entry - 1].x == p.x() && entries_[slots_[i].entry - 1].y == p.y()))
+      i = (i + 1) & mask_;
+    return i;
+  }
 
   void rehash(std::size_t capacity)
   {
@@ -133,7 +133,7 @@ private:
       --shift_;
     for(std::size_t e = 0; e < entries_.size(); ++e)
     {
-      const std::uint64_t h = hash(entries_[e].x, entries_[e].y);
+      const std::uint64_t h = planar_point_hash(entries_[e].x, entries_[e].y);
       std::size_t i = std::size_t(h >> shift_);
       while(slots_[i].entry != 0)
         i = (i + 1) & mask_;
