@@ -662,6 +662,47 @@ TEST(ThinPatches, CurvesOfChordsThatCannotGlueAreSampledMoreDensely)
   EXPECT_TRUE(R::check_glue(loops, simple, ids, samples).chords_not_glued.empty());
 }
 
+TEST(BoundarySamples, BordersThatBendAreSampledCloserButNotUnderFourFifthsOfTheSpacing)
+{
+  namespace R = CR::internal::remeshing;
+  // A flat annulus between circles of radii 2 and 12 (720 input vertices on each), sampled at
+  // spacing 1. At the spacing, a chord of the outer circle would stand 1 / 96 = 0.0104 off it;
+  // the border is sampled closer, to chords about 0.876 long standing R::border_chord_deviation
+  // (0.008) off. The inner circle would need chords of 0.36: its samples stop at 0.8 of the spacing.
+  Mesh annulus;
+  make_drilled_wall(annulus, 2., 12., 0., 720);
+  CR::Poly_annulus_segmentation s;
+  CR::segment_into_poly_annuli(annulus, s);
+  const R::Curve_samples samples = R::sample_boundary_curves(s, 1., 30.);
+  ASSERT_EQ(samples.number_of_curves, 2u);
+  double outer_deviation = 0., outer_shortest = HUGE_VAL, inner_shortest = HUGE_VAL, inner_longest = 0.;
+  std::size_t outer_chords = 0, inner_chords = 0;
+  for(const auto& chord : samples.curve_of_chord)
+  {
+    const K::Point_3 &a = samples.points[chord.first.first], &b = samples.points[chord.first.second];
+    const double length = std::sqrt(CGAL::squared_distance(a, b));
+    const double middle_radius = std::sqrt((CGAL::midpoint(a, b) - CGAL::ORIGIN).squared_length());
+    if(middle_radius > 7.)
+    {
+      ++outer_chords;
+      outer_deviation = (std::max)(outer_deviation, 12. - middle_radius);
+      outer_shortest = (std::min)(outer_shortest, length);
+    }
+    else
+    {
+      ++inner_chords;
+      inner_shortest = (std::min)(inner_shortest, length);
+      inner_longest = (std::max)(inner_longest, length);
+    }
+  }
+  EXPECT_EQ(outer_chords, 86u); // 2 pi 12 / 0.876
+  EXPECT_LT(outer_deviation, 0.0085);
+  EXPECT_GT(outer_shortest, 0.85);
+  EXPECT_EQ(inner_chords, 16u); // 2 pi 2 / 0.8
+  EXPECT_GT(inner_shortest, 0.75); // chords of arcs of 0.785
+  EXPECT_LT(inner_longest, 0.8);
+}
+
 TEST(ThinPatches, DiagonalsBetweenSamplesCanBeSplit)
 {
   namespace R = CR::internal::remeshing;
