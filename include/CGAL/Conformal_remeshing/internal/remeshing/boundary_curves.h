@@ -68,6 +68,14 @@ constexpr double shortest_cut_piece = 0.3;
 constexpr double border_chord_deviation = 0.008;
 constexpr double closest_border_samples = 0.8;
 
+/// The angle in radians between the directions `in` and `out` of a polyline at a vertex: how
+/// much it turns there (0 where it goes straight on).
+inline double turn_angle(const Epick::Vector_3& in, const Epick::Vector_3& out)
+{
+  const double c = (in * out) / (std::sqrt(in.squared_length()) * std::sqrt(out.squared_length()));
+  return std::acos((std::max)(-1., (std::min)(1., c)));
+}
+
 /// The curvature of a border polyline at each of its vertices (its turn over the mean length of
 /// the two edges there), 0 at the ends of an open curve, which are corners or junctions.
 template <typename Mesh, typename Vertex>
@@ -81,10 +89,8 @@ std::vector<double> polyline_curvatures(const Mesh& m, const std::vector<Vertex>
       continue;
     // a closed curve repeats its first vertex at the end
     const std::size_t before = i == 0 ? curve.size() - 2 : i - 1, after = i + 1 == curve.size() ? 1 : i + 1;
-    const auto in = m.point(curve[i]) - m.point(curve[before]), out = m.point(curve[after]) - m.point(curve[i]);
-    const double in_length = std::sqrt(in.squared_length()), out_length = std::sqrt(out.squared_length());
-    const double cosine = (in * out) / (in_length * out_length);
-    curvature[i] = std::acos((std::max)(-1., (std::min)(1., cosine))) / (0.5 * (in_length + out_length));
+    const Epick::Vector_3 in = m.point(curve[i]) - m.point(curve[before]), out = m.point(curve[after]) - m.point(curve[i]);
+    curvature[i] = turn_angle(in, out) / (0.5 * (std::sqrt(in.squared_length()) + std::sqrt(out.squared_length())));
   }
   return curvature;
 }
@@ -132,8 +138,7 @@ inline Curve_samples sample_boundary_curves(const Poly_annulus_segmentation& s, 
       continue;
     }
     const Epick::Vector_3 in = m.point(v) - m.point(m.target(out[0])), next = m.point(m.target(out[1])) - m.point(v);
-    const double c = (in * next) / std::sqrt(in.squared_length() * next.squared_length());
-    junction[v] = std::acos((std::max)(-1., (std::min)(1., c))) * 180. / CGAL_PI > corner_degrees;
+    junction[v] = turn_angle(in, next) * 180. / CGAL_PI > corner_degrees;
   }
 
   // A cut between patches follows input edges, and on a scan it zigzags: a turn above the corner
@@ -236,7 +241,8 @@ inline Curve_samples sample_boundary_curves(const Poly_annulus_segmentation& s, 
     };
     std::vector<Piece> pieces_of_curve;
     double total = 0.;
-    const bool border = m.is_border(m.edge(m.halfedge(curve[0], curve[1])));
+    const Halfedge first_edge = m.halfedge(curve[0], curve[1]);
+    const bool border = m.is_border(m.edge(first_edge));
     const std::vector<double> curvature = border ? polyline_curvatures(m, curve) : std::vector<double>();
     // how many times closer than `spacing` the samples on the curve's `i`-th edge must be
     auto closer_on_bend = [&](std::size_t i, double spacing) {
@@ -274,7 +280,6 @@ inline Curve_samples sample_boundary_curves(const Poly_annulus_segmentation& s, 
     // A slit (a feature inside a patch, the same patch on both sides) is traversed once per side
     // by the same loop: with one piece, a slit whose ends are both free would be a loop of two
     // samples, a polygon of no area in the plane.
-    const Halfedge first_edge = m.halfedge(curve[0], curve[1]);
     const bool slit = patch_of(first_edge) == patch_of(m.opposite(first_edge));
     const std::size_t fewest = curve.front() == curve.back() ? 3
                                : (slit || curves_between[std::minmax(curve.front(), curve.back())] > 1) ? 2 : 1;
