@@ -343,7 +343,8 @@ inline Glue_check check_glue(const std::vector<std::vector<Boundary_sample> >& l
 // table of the last lifts (a point whose entry was overwritten starts from the last point's
 // triangle: a longer walk, the same answer). It replaced a memory of every lift (250k on the
 // shark), whose lookups cost more than the lifts they saved: the optimizer's split passes, which
-// lifted most points again, remember their edges' midpoints themselves.
+// lifted most points again, remember their edges' midpoints themselves. (The optimizer keeps
+// a hint per vertex instead of this table: see its lift in remesh_flattened_patch().)
 class Surface_map_with_hints
 {
 public:
@@ -516,8 +517,10 @@ inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, c
   start = Clock::now();
   if(optimization_rounds > 0)
   {
-    const auto lift = [&](const Epick::Point_2& p, const Epick::Point_2& near) {
-      return flat.surface_point(surface_map.lift(p, &near).on_patch);
+    // No state but the hint: each vertex keeps its own (see Surface_mesh_optimizer).
+    const auto lift = [&](const Epick::Point_2& p, std::size_t& hint) {
+      const Planar_locator::Location l = locator.locate(p, hint);
+      return flat.surface_point(l.triangle, l.coordinates);
     };
     std::vector<Epick::Point_3> positions(sample_points); // the samples, in loop order, first
     positions.resize(planar.points.size());

@@ -258,8 +258,8 @@ namespace RM = CR::internal::remeshing;
 // The surface z = 0.2 sin(3x) over the plane: its map from the plane is not conformal, so the
 // optimization has to judge shapes on the surface, not in the plane.
 CGAL::Epick::Point_3 wavy_lift(const CGAL::Epick::Point_2& p) { return CGAL::Epick::Point_3(p.x(), p.y(), 0.2 * std::sin(3. * p.x())); }
-// The same as the optimizer calls it (with a point nearby, for its walks)
-CGAL::Epick::Point_3 wavy_lift_near(const CGAL::Epick::Point_2& p, const CGAL::Epick::Point_2&) { return wavy_lift(p); }
+// The same as the optimizer calls it (with a search hint, unused here)
+CGAL::Epick::Point_3 wavy_lift_near(const CGAL::Epick::Point_2& p, std::size_t&) { return wavy_lift(p); }
 
 // A square loop of side 2 `half`, sampled every `spacing`, counterclockwise or clockwise.
 std::vector<RM::Boundary_sample> sampled_square(double half, double spacing, bool clockwise)
@@ -329,7 +329,7 @@ struct Optimization_case
   std::vector<std::array<int, 3> > triangles;
   std::function<CGAL::Epick::Point_3(const CGAL::Epick::Point_2&)> lift;
   // as the optimizer calls it
-  CGAL::Epick::Point_3 operator()(const CGAL::Epick::Point_2& p, const CGAL::Epick::Point_2&) const { return lift(p); }
+  CGAL::Epick::Point_3 operator()(const CGAL::Epick::Point_2& p, std::size_t&) const { return lift(p); }
 };
 
 Optimization_case square_with_hole(double size, std::function<CGAL::Epick::Point_3(const CGAL::Epick::Point_2&)> lift = wavy_lift)

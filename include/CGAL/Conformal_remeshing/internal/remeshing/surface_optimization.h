@@ -138,16 +138,18 @@ struct Triangle_shape
 };
 
 /// Flips and moves on an indexed planar triangle mesh whose vertices also have surface
-/// positions, kept up to date through `lift` (`lift(p, near)`: the surface point of the planar
-/// point `p`, where `near` is a planar point close by that was lifted before). Triangles are
-/// counterclockwise; `neighbor_[t][k]` is the triangle across the edge opposite corner `k` of
-/// `t`, or -1 on the boundary.
+/// positions, kept up to date through `lift` (`lift(p, hint)`: the surface point of the planar
+/// point `p`; `hint`, a `std::size_t` that starts as `no_hint`, is where the search for `p`
+/// starts and becomes where `p` was found, so a point lifted near one lifted before is found
+/// fast; the optimizer keeps one per vertex). Triangles are counterclockwise; `neighbor_[t][k]`
+/// is the triangle across the edge opposite corner `k` of `t`, or -1 on the boundary.
 template <typename Lift>
 class Surface_mesh_optimizer
 {
 public:
   typedef Epick::Point_2 Point_2;
   typedef Epick::Point_3 Point_3;
+  static constexpr std::size_t no_hint = std::size_t(-1);
 
   /// `points[v]` and `positions[v]` are vertex `v` in the plane and on the surface. No
   /// operation creates a surface angle below the smaller of `angle_bound_degrees` and the
@@ -173,6 +175,7 @@ public:
     const std::size_t nt = triangles_.size(), nv = points_.size();
     fixed_.assign(nv, 0);
     moves_.assign(nv, 0);
+    hints_.assign(nv, no_hint);
     settled_.assign(nv, 0);
     valence_.assign(nv, 0);
     if(!link_triangles(triangles_, neighbor_, [&](int a, int b, bool interior) {
@@ -249,12 +252,7 @@ public:
   /// A vertex within a hundredth of its edges from that centroid stays.
   std::size_t smoothing_pass()
   {
-    std::size_t moves = 0;
-    std::vector<int> ring;
-    for(std::size_t v = 0; v < points_.size(); ++v)
-    {
-      if(fixed_[v] || (settled_[v] & SMOOTHING) || !interior_ring(int(v), ring))
-        continue;
+    return move_pass(SMOOTHING, [this](int v, const std::vector<int>& ring) -> Move_outcome {
       const Point_2 p = points_[v];
       double weight = 0., x = 0., y = 0.;
       for(std::size_t i = 0; i < ring.size(); ++i)
@@ -266,30 +264,20 @@ public:
         y += area * (p.y() + points_[q].y() + points_[r].y()) / 3.;
       }
       if(!(weight > 0.))
-        continue;
+        return SKIPPED;
       const Point_2 centroid(x / weight, y / weight);
-      if(CGAL::squared_distance(p, centroid) < CGAL::square(0.01 * mean_planar_edge(int(v), ring)))
-      {
-        settled_[v] |= SMOOTHING;
-        continue;
-      }
+      if(CGAL::squared_distance(p, centroid) < CGAL::square(0.01 * mean_planar_edge(v, ring)))
+        return REFUSED;
       const double limit = move_limit(positions_[v], ring), energy = star_skewness(positions_[v], ring);
-      const Linear_map_2_3 jacobian = star_jacobian(int(v), ring);
-      bool moved_once = false;
+      const Linear_map_2_3 jacobian = star_jacobian(v, ring);
       for(double t : {1., 0.5, 0.25})
       {
         const Epick::Vector_2 step = t * (centroid - p);
-        if(predicts_lower_skewness(int(v), ring, jacobian(step), energy) && try_move(int(v), p + step, ring, limit, energy))
-        {
-          moved_once = true;
-          break;
-        }
+        if(predicts_lower_skewness(v, ring, jacobian(step), energy) && try_move(v, p + step, ring, limit, energy))
+          return MOVED;
       }
-      moves += moved_once;
-      if(!moved_once)
-        settled_[v] |= SMOOTHING;
-    }
-    return moves;
+      return REFUSED;
+    });
   }
 
   /// Moves every free vertex whose star has a triangle of skewness `threshold` or more by a
@@ -299,22 +287,18 @@ public:
   /// its end point is then lifted and judged on the surface, and half of its step is tried when
   /// that is refused. (Lifting every improving step of the search took 1.3 of the 2 seconds
   /// the optimization of the shield of issue #7 took; the mean skewness of the paper's parts
-  /// moved by less than 0.0002 either way.)
+  /// moved by less than 0.0002 either way.) A vertex whose star has no such triangle is left
+  /// unsettled: a neighbour's move may make one.
   std::size_t skewness_pass(double threshold)
   {
-    std::size_t moves = 0;
-    std::vector<int> ring;
-    for(std::size_t v = 0; v < points_.size(); ++v)
-    {
-      if(fixed_[v] || (settled_[v] & SKEWNESS) || !interior_ring(int(v), ring))
-        continue;
+    return move_pass(SKEWNESS, [this, threshold](int v, const std::vector<int>& ring) -> Move_outcome {
       double worst = 0.;
       for(std::size_t i = 0; i < ring.size(); ++i)
         worst = (std::max)(worst, Triangle_shape::skewness(positions_[v], positions_[ring[i]], positions_[ring[(i + 1) % ring.size()]]));
       if(worst < threshold)
-        continue;
-      const double mean = mean_planar_edge(int(v), ring);
-      const Linear_map_2_3 jacobian = star_jacobian(int(v), ring);
+        return SKIPPED;
+      const double mean = mean_planar_edge(v, ring);
+      const Linear_map_2_3 jacobian = star_jacobian(v, ring);
       const double energy = star_skewness(positions_[v], ring);
       const double directions[4][2] = {{1., 0.}, {0., 1.}, {-1., 0.}, {0., -1.}};
       Epick::Vector_2 step = CGAL::NULL_VECTOR;
@@ -330,18 +314,12 @@ public:
             predicted = e;
           }
         }
-      bool moved = false;
-      if(predicted < energy)
-      {
-        const double limit = move_limit(positions_[v], ring);
-        const Point_2 p = points_[v];
-        moved = try_move(int(v), p + step, ring, limit, energy) || try_move(int(v), p + 0.5 * step, ring, limit, energy);
-      }
-      moves += moved;
-      if(!moved)
-        settled_[v] |= SKEWNESS;
-    }
-    return moves;
+      if(!(predicted < energy))
+        return REFUSED;
+      const double limit = move_limit(positions_[v], ring);
+      const Point_2 p = points_[v];
+      return (try_move(v, p + step, ring, limit, energy) || try_move(v, p + 0.5 * step, ring, limit, energy)) ? MOVED : REFUSED;
+    });
   }
 
   /// Splits the interior edges that `bounds` names at their planar midpoint (lifted by the map),
@@ -409,7 +387,8 @@ public:
     for(const Lifted_midpoint& known : {lifted_midpoints_[3 * t + k], lifted_midpoints_[3 * u + j]})
       if(std::minmax(known.a, known.b) == std::minmax(a, b) && known.moves_a == moves_[known.a] && known.moves_b == moves_[known.b])
         return known.x;
-    const Lifted_midpoint lifted{a, b, moves_[a], moves_[b], lift_(m, points_[a])};
+    std::size_t hint = hints_[a];
+    const Lifted_midpoint lifted{a, b, moves_[a], moves_[b], lift_(m, hint)};
     lifted_midpoints_[3 * t + k] = lifted_midpoints_[3 * u + j] = lifted;
     return lifted.x;
   }
@@ -495,7 +474,10 @@ public:
         const auto no_more_below = [&](const Point_3& x) { return below_target(x) <= below; };
         if(predicted < now
            && (try_move(v, points_[v] + step, ring, now - 1e-9, no_more_below) || try_move(v, points_[v] + 0.5 * step, ring, now - 1e-9, no_more_below)))
+        {
+          unsettle_star(v, ring);
           ++changes;
+        }
       }
     }
     return changes;
@@ -512,6 +494,44 @@ private:
   };
 
   void unsettle(int v) { settled_[v] = 0; }
+
+  void unsettle_star(int v, const std::vector<int>& ring)
+  {
+    unsettle(v);
+    for(int w : ring)
+      unsettle(w);
+  }
+
+  // What a move pass did with a vertex: a refused vertex is settled for that kind of move.
+  enum Move_outcome
+  {
+    MOVED,
+    REFUSED,
+    SKIPPED
+  };
+
+  // Runs `move(v, ring)` on every free interior vertex not settled for `kind`, in index order;
+  // a vertex that moved unsettles its star. Returns the number of moves.
+  template <typename Move>
+  std::size_t move_pass(Settled kind, const Move& move)
+  {
+    std::size_t moves = 0;
+    std::vector<int> ring;
+    for(std::size_t v = 0; v < points_.size(); ++v)
+    {
+      if(fixed_[v] || (settled_[v] & kind) || !interior_ring(int(v), ring))
+        continue;
+      const Move_outcome outcome = move(int(v), ring);
+      if(outcome == REFUSED)
+        settled_[v] |= kind;
+      else if(outcome == MOVED)
+      {
+        ++moves;
+        unsettle_star(int(v), ring);
+      }
+    }
+    return moves;
+  }
 
   // The plane-to-surface map near a vertex, to first order: the linear map that best carries the
   // planar edges of its star to their surface edges (least squares). It predicts the surface move
@@ -558,23 +578,38 @@ private:
     return {(c * bx - b * by) / det, (a * by - b * bx) / det};
   }
 
-  // The squared distance from the midpoint of the chord between the surface points x and y (of
-  // the planar points p and q) to the surface point of its planar midpoint; 0, without a lift,
-  // for a chord shorter than every kept bound.
-  double chord_sag_squared(const Point_2& p, const Point_3& x, const Point_2& q, const Point_3& y) const
+  // A chord between the surface points x and y of the planar points p and q; lifts near p start
+  // from `hint`.
+  struct Chord
   {
-    if(!(CGAL::squared_distance(x, y) > CGAL::square(kept_chords_.shortest_chord())))
-      return 0.;
-    return CGAL::squared_distance(lift_(CGAL::midpoint(p, q), p), CGAL::midpoint(x, y));
+    Point_2 p;
+    Point_3 x;
+    Point_2 q;
+    Point_3 y;
+    std::size_t hint;
+  };
+
+  Chord chord(int a, int b) const
+  {
+    return Chord{points_[a], positions_[a], points_[b], positions_[b], hints_[a] != no_hint ? hints_[a] : hints_[b]};
   }
 
-  // Whether the new chord from (p, x) to (q, y) is one the kept bounds name, standing farther off
-  // the surface than the chord from (old_p, old_x) to (old_q, old_y) it replaces.
-  bool cuts_further_under(const Point_2& p, const Point_3& x, const Point_2& q, const Point_3& y, const Point_2& old_p,
-                          const Point_3& old_x, const Point_2& old_q, const Point_3& old_y) const
+  // The squared distance from the chord's midpoint to the surface point of its planar midpoint;
+  // 0, without a lift, for a chord shorter than every kept bound.
+  double chord_sag_squared(const Chord& c) const
   {
-    const double sag = chord_sag_squared(p, x, q, y);
-    return kept_chords_.names_chord(CGAL::squared_distance(x, y), sag) && sag > chord_sag_squared(old_p, old_x, old_q, old_y);
+    if(!(CGAL::squared_distance(c.x, c.y) > CGAL::square(kept_chords_.shortest_chord())))
+      return 0.;
+    std::size_t hint = c.hint;
+    return CGAL::squared_distance(lift_(CGAL::midpoint(c.p, c.q), hint), CGAL::midpoint(c.x, c.y));
+  }
+
+  // Whether the new chord is one the kept bounds name, standing farther off the surface than the
+  // old one it replaces.
+  bool cuts_further_under(const Chord& new_chord, const Chord& old_chord) const
+  {
+    const double sag = chord_sag_squared(new_chord);
+    return kept_chords_.names_chord(CGAL::squared_distance(new_chord.x, new_chord.y), sag) && sag > chord_sag_squared(old_chord);
   }
 
   // Whether flipping the edge a-b of the quad (c, a, d, b) into c-d keeps the length bound (or
@@ -583,7 +618,7 @@ private:
   {
     if(CGAL::squared_distance(positions_[c], positions_[d]) > (std::max)(longest_squared_, CGAL::squared_distance(positions_[a], positions_[b])))
       return false;
-    return !cuts_further_under(points_[c], positions_[c], points_[d], positions_[d], points_[a], positions_[a], points_[b], positions_[b]);
+    return !cuts_further_under(chord(c, d), chord(a, b));
   }
 
   // Whether flipping (c, a, b), (d, b, a) into (c, a, d), (c, d, b) creates no angle below the
@@ -647,7 +682,8 @@ private:
     for(std::size_t i = 0; i < ring.size(); ++i)
       if(CGAL::orientation(moved, points_[ring[i]], points_[ring[(i + 1) % ring.size()]]) != CGAL::POSITIVE)
         return false;
-    const Point_3 x = lift_(moved, points_[v]);
+    std::size_t hint = hints_[v];
+    const Point_3 x = lift_(moved, hint);
     for(std::size_t i = 0; i < ring.size(); ++i)
       if(Triangle_shape::min_angle_cosine(x, positions_[ring[i]], positions_[ring[(i + 1) % ring.size()]]) > limit)
         return false;
@@ -657,14 +693,12 @@ private:
     if(!improves(x))
       return false;
     for(int w : ring)
-      if(cuts_further_under(moved, x, points_[w], positions_[w], points_[v], positions_[v], points_[w], positions_[w]))
+      if(cuts_further_under(Chord{moved, x, points_[w], positions_[w], hint}, chord(v, w)))
         return false;
     points_[v] = moved;
     positions_[v] = x;
+    hints_[v] = hint;
     ++moves_[v];
-    unsettle(v);
-    for(int w : ring)
-      unsettle(w);
     return true;
   }
 
@@ -757,6 +791,7 @@ private:
     positions_.push_back(x);
     fixed_.push_back(0);
     moves_.push_back(0);
+    hints_.push_back(hints_[a]);
     settled_.push_back(0);
     valence_.push_back(4);
     target_.push_back(6);
@@ -801,6 +836,7 @@ private:
   std::vector<char> fixed_;
   std::vector<unsigned char> settled_;
   std::vector<unsigned> moves_; // how many times each vertex moved
+  std::vector<std::size_t> hints_; // where each vertex was found by its last lift (see `Lift`)
   struct Lifted_midpoint
   {
     int a = -1, b = -1; // the edge's ends, when they had moved moves_a and moves_b times
