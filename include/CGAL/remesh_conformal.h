@@ -117,7 +117,8 @@ struct Remeshing_report
   std::size_t self_intersection_refinements = 0;
   /// wall-clock seconds of the stages (the flattening and meshing stages run patches in parallel)
   double seconds_segmentation = 0., seconds_flattening = 0., seconds_meshing_stage = 0., seconds_gluing = 0.;
-  /// seconds summed over the patches (thread time)
+  /// seconds summed over the patches (thread time; the optimization's vertex moves within a
+  /// patch run in parallel too, so `seconds_optimization` sums the patches' wall time)
   double seconds_ricci_flow = 0., seconds_planar_meshing = 0., seconds_optimization = 0., seconds_pull_back = 0.;
 };
 
@@ -436,11 +437,13 @@ private:
 // Planar Delaunay refinement of a flattened patch with the shared boundary samples, then the
 // pull-back of the new points onto the surface through the flow's correspondence.
 // No edge joins the two samples of a pair in `diagonals_to_split` (sample indices, smaller first).
+// The optimization's vertex moves run in parallel with `moves_in_parallel`, with the same result.
 inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, const std::vector<double>& scale,
                                              const Extracted_patch& patch,
                                              const Curve_samples& samples, const Sizing& sizing, double min_angle,
                                              int smoothing_iterations, int optimization_rounds,
-                                             const std::set<std::pair<std::size_t, std::size_t> >& diagonals_to_split = {})
+                                             const std::set<std::pair<std::size_t, std::size_t> >& diagonals_to_split = {},
+                                             bool moves_in_parallel = false)
 {
   typedef std::chrono::steady_clock Clock;
   Clock::time_point start = Clock::now();
@@ -517,7 +520,8 @@ inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, c
   start = Clock::now();
   if(optimization_rounds > 0)
   {
-    // No state but the hint: each vertex keeps its own (see Surface_mesh_optimizer).
+    // No state but the hint, which each vertex keeps (see Surface_mesh_optimizer): the moves of
+    // a pass may call it from several threads at once.
     const auto lift = [&](const Epick::Point_2& p, std::size_t& hint) {
       const Planar_locator::Location l = locator.locate(p, hint);
       return flat.surface_point(l.triangle, l.coordinates);
@@ -533,7 +537,7 @@ inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, c
     result.optimization =
       optimize_on_surface(planar.points, positions, planar.triangles, planar.number_of_fixed_points, lift, min_angle,
                           longest_edge_factor * sizing.target(), split_bounds, optimization_rounds,
-                          result.boundary_ids, diagonals_to_split);
+                          result.boundary_ids, diagonals_to_split, moves_in_parallel);
   }
   result.seconds_optimization = std::chrono::duration<double>(Clock::now() - start).count();
   // The optimizer keeps every chord (it never flips a boundary edge) and makes none of the
@@ -695,7 +699,8 @@ Meshed_patches mesh_patches_on_shared_samples(const Poly_annulus_segmentation& s
         if(scales[p].empty()) // a patch may be meshed again (denser curves, split diagonals)
           scales[p] = local_scale(flattenings[p]);
         remeshed[p] = remesh_flattened_patch(flattenings[p], scales[p], patches[p], samples, sizing, min_angle, smoothing,
-                                             optimization_rounds, diagonals_to_split[p]);
+                                             optimization_rounds, diagonals_to_split[p],
+                                             std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value);
       }
       catch(const Error& e)
       {

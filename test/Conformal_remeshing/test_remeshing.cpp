@@ -428,6 +428,34 @@ TEST(SurfaceOptimization, KeepsTheDomainAndImprovesTheShapesOnTheSurface)
   EXPECT_LT(after.mean_skewness, 0.125);
 }
 
+TEST(SurfaceOptimization, MovesInParallelGiveTheSameMeshAsInOrder)
+{
+  // The moves of a class of vertices, no two of them neighbours, run at once (with TBB): the
+  // result must not depend on it. Fine enough for classes of hundreds of vertices, that TBB
+  // cuts into blocks; with splits, so that the classes change between passes.
+  Optimization_case in_order = square_with_hole(0.035), in_parallel = square_with_hole(0.035);
+  ASSERT_GT(in_order.raw.points.size(), 3000u);
+  const RM::Surface_optimization_report a = RM::optimize_on_surface(
+    in_order.points, in_order.positions, in_order.triangles, in_order.raw.number_of_samples, in_order, 28., 0.035, longer_than(0.032), 5, {}, {}, false);
+  const RM::Surface_optimization_report b = RM::optimize_on_surface(
+    in_parallel.points, in_parallel.positions, in_parallel.triangles, in_parallel.raw.number_of_samples, in_parallel, 28., 0.035, longer_than(0.032), 5, {}, {}, true);
+#ifdef CGAL_LINKED_WITH_TBB
+  std::cout << "moves in parallel with TBB: ";
+#else
+  std::cout << "no TBB, moves in order both times: ";
+#endif
+  std::cout << a.moves << " moves, " << a.flips << " flips, " << a.splits << " splits" << std::endl;
+  EXPECT_GT(a.moves, 1000u);
+  EXPECT_GT(a.splits, 0u);
+  EXPECT_EQ(a.moves, b.moves);
+  EXPECT_EQ(a.flips, b.flips);
+  EXPECT_EQ(a.splits, b.splits);
+  EXPECT_EQ(a.angle_changes, b.angle_changes);
+  EXPECT_EQ(in_order.triangles, in_parallel.triangles);
+  EXPECT_EQ(in_order.points, in_parallel.points);
+  EXPECT_EQ(in_order.positions, in_parallel.positions);
+}
+
 TEST(SurfaceOptimization, SplitsTheLongInnerEdgesAndKeepsTheEdgesShorterAfterwards)
 {
   // Refined to 0.07 as above; without splits, the optimization leaves edges up to 0.07 long.

@@ -40,6 +40,27 @@ void for_each_index(std::size_t n, const Task& task)
     task(i);
 }
 
+/// Runs `task(begin, end)` on blocks that cover [0, n) once: in parallel with TBB when
+/// `parallel` is true and TBB is available (blocks of at most `grain` indices), else on the
+/// whole range at once. For loops whose iterations are short and need scratch space per block.
+template <typename Task>
+void for_each_block(bool parallel, std::size_t n, std::size_t grain, const Task& task)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  if(parallel && n > grain)
+  {
+    tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, grain),
+                      [&](const tbb::blocked_range<std::size_t>& r) { task(r.begin(), r.end()); });
+    return;
+  }
+#else
+  (void)parallel;
+  (void)grain;
+#endif
+  if(n > 0)
+    task(std::size_t(0), n);
+}
+
 } // namespace internal
 } // namespace Conformal_remeshing
 } // namespace CGAL

@@ -14,6 +14,7 @@
 #ifndef CGAL_CONFORMAL_REMESHING_INTERNAL_REMESHING_SURFACE_OPTIMIZATION_H
 #define CGAL_CONFORMAL_REMESHING_INTERNAL_REMESHING_SURFACE_OPTIMIZATION_H
 
+#include <CGAL/Conformal_remeshing/internal/parallel_for_each_index.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/triangle_adjacency.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -141,8 +142,10 @@ struct Triangle_shape
 /// positions, kept up to date through `lift` (`lift(p, hint)`: the surface point of the planar
 /// point `p`; `hint`, a `std::size_t` that starts as `no_hint`, is where the search for `p`
 /// starts and becomes where `p` was found, so a point lifted near one lifted before is found
-/// fast; the optimizer keeps one per vertex). Triangles are counterclockwise; `neighbor_[t][k]`
-/// is the triangle across the edge opposite corner `k` of `t`, or -1 on the boundary.
+/// fast; the optimizer keeps one per vertex). The moves of a pass may run in parallel (see
+/// `run_in_parallel()`): `lift` is then called from several threads at once, with different
+/// hints. Triangles are counterclockwise; `neighbor_[t][k]` is the triangle across the edge
+/// opposite corner `k` of `t`, or -1 on the boundary.
 template <typename Lift>
 class Surface_mesh_optimizer
 {
@@ -204,6 +207,10 @@ public:
       fixed_[v] = 1;
     return true;
   }
+
+  /// Whether the vertex moves of a pass run in parallel (with TBB, when CGAL is linked with it).
+  /// The result is the same either way: see `move_pass()`.
+  void run_in_parallel(bool parallel) { parallel_ = parallel; }
 
   /// What a flip pass goes for.
   enum Flip_goal
@@ -510,27 +517,61 @@ private:
     SKIPPED
   };
 
-  // Runs `move(v, ring)` on every free interior vertex not settled for `kind`, in index order;
-  // a vertex that moved unsettles its star. Returns the number of moves.
+  // Runs `move(v, ring)` on every free interior vertex not settled for `kind`, class by class of
+  // `independent_classes()`. No two vertices of a class are neighbours, so the move of one reads
+  // its star and writes its own vertex only, which no other move of its class reads: the moves of
+  // a class may run at once. The stars of the vertices that moved are unsettled after each class.
+  // The order is the same in parallel or not, and so is the result. Returns the number of moves.
   template <typename Move>
   std::size_t move_pass(Settled kind, const Move& move)
   {
     std::size_t moves = 0;
     std::vector<int> ring;
+    for(const std::vector<int>& vertices : independent_classes(kind))
+    {
+      std::vector<char> outcome(vertices.size(), SKIPPED);
+      for_each_block(parallel_, vertices.size(), 64, [&](std::size_t begin, std::size_t end) {
+        std::vector<int> star;
+        for(std::size_t i = begin; i < end; ++i)
+          if(interior_ring(vertices[i], star))
+            outcome[i] = char(move(vertices[i], star));
+      });
+      for(std::size_t i = 0; i < vertices.size(); ++i)
+        if(outcome[i] == REFUSED)
+          settled_[vertices[i]] |= kind;
+      for(std::size_t i = 0; i < vertices.size(); ++i)
+        if(outcome[i] == MOVED && interior_ring(vertices[i], ring))
+        {
+          ++moves;
+          unsettle_star(vertices[i], ring);
+        }
+    }
+    return moves;
+  }
+
+  // The free interior vertices not settled for `kind`, in classes of which no two are
+  // neighbours: each vertex, in index order, joins the first class that has none of its
+  // neighbours. Refinement meshes need about seven.
+  std::vector<std::vector<int> > independent_classes(Settled kind) const
+  {
+    std::vector<std::vector<int> > classes;
+    std::vector<int> class_of(points_.size(), -1), ring;
+    std::vector<char> taken;
     for(std::size_t v = 0; v < points_.size(); ++v)
     {
       if(fixed_[v] || (settled_[v] & kind) || !interior_ring(int(v), ring))
         continue;
-      const Move_outcome outcome = move(int(v), ring);
-      if(outcome == REFUSED)
-        settled_[v] |= kind;
-      else if(outcome == MOVED)
-      {
-        ++moves;
-        unsettle_star(int(v), ring);
-      }
+      taken.assign(classes.size() + 1, 0);
+      for(int w : ring)
+        if(class_of[w] >= 0)
+          taken[std::size_t(class_of[w])] = 1;
+      const std::size_t c = std::size_t(std::find(taken.begin(), taken.end(), 0) - taken.begin());
+      if(c == classes.size())
+        classes.emplace_back();
+      classes[c].push_back(int(v));
+      class_of[v] = int(c);
     }
-    return moves;
+    return classes;
   }
 
   // The plane-to-surface map near a vertex, to first order: the linear map that best carries the
@@ -837,6 +878,7 @@ private:
   std::vector<unsigned char> settled_;
   std::vector<unsigned> moves_; // how many times each vertex moved
   std::vector<std::size_t> hints_; // where each vertex was found by its last lift (see `Lift`)
+  bool parallel_ = false;
   struct Lifted_midpoint
   {
     int a = -1, b = -1; // the edge's ends, when they had moved moves_a and moves_b times
@@ -863,12 +905,15 @@ private:
 /// plane (exact predicates); no operation creates a surface angle below the smaller of
 /// `angle_bound_degrees` and the smallest angle it replaces, so the smallest angle never drops
 /// below the smaller of its initial value and the bound. Each pass is linear in the mesh size.
+/// With `in_parallel`, the vertex moves of each pass run in parallel (see
+/// `Surface_mesh_optimizer::run_in_parallel()`), with the same result.
 template <typename Lift>
 Surface_optimization_report optimize_on_surface(std::vector<Epick::Point_2>& points, std::vector<Epick::Point_3>& positions,
                                                 std::vector<std::array<int, 3> >& triangles, std::size_t number_of_fixed_points,
                                                 const Lift& lift, double angle_bound_degrees, double longest_edge, const Edge_split_bounds& split, int rounds,
                                                 const std::vector<std::size_t>& sample_ids = {},
-                                                const std::set<std::pair<std::size_t, std::size_t> >& forbidden_diagonals = {})
+                                                const std::set<std::pair<std::size_t, std::size_t> >& forbidden_diagonals = {},
+                                                bool in_parallel = false)
 {
   Surface_optimization_report report;
   if(rounds <= 0 || triangles.empty())
@@ -876,6 +921,7 @@ Surface_optimization_report optimize_on_surface(std::vector<Epick::Point_2>& poi
   Surface_mesh_optimizer<Lift> optimizer(points, positions, triangles, lift, angle_bound_degrees, longest_edge);
   if(!optimizer.initialize(number_of_fixed_points, sample_ids, forbidden_diagonals))
     return report;
+  optimizer.run_in_parallel(in_parallel);
   report.optimized = true;
   // Each round: valence flips, then flips that improve shapes without hurting valences, then two
   // smoothing passes; the skewness passes at the end polish what smoothing leaves. (Measured on
