@@ -166,9 +166,10 @@ inline std::size_t move_points_after_gluing(const Poly_annulus_segmentation& s, 
       result.allowed = false;
     return result;
   };
-  // Looks for a better place for v: `better(at)` says whether the star at a place is better than
-  // the best so far, and takes it as the best; a step toward `centroid` first, when given, then a
-  // compass search in the tangent plane around where that ended. The best place, or v's own.
+  // Looks for a better place for v: `better(x)` says whether v's star with v at the surface point
+  // x is better than at the best place so far, and if so makes x the best; a step toward the
+  // star's centroid first, when `to_centroid` is given, then a compass search in the tangent
+  // plane around where that ended. Returns the best place, v's own if none was better.
   auto search = [&](std::size_t v, const Vector_3* to_centroid, const Vector_3& normal, const auto& better) {
     const Point_3 p = points[v];
     Located best(p, point_face[v]), located;
