@@ -819,6 +819,57 @@ TEST(FlipsAfterGluing, ShapePassesFlipTheChosenEdgesOnly)
   EXPECT_GT(RM::Triangle_shape::skewness(points[c], points[a], points[b]), 0.45);
 }
 
+TEST(MovesAfterGluing, AStarWithAnAngleBelowTheTargetHasItRaised)
+{
+  // A flat star of three triangles around point 0 inside the triangle (-1, -0.5), (1, -0.5),
+  // (0.6, 1), whose corner of 43.2 degrees is split in two: no place gives the star 30 degrees.
+  // Where the summed skewness is smallest (about (0, 0.036), found by a scan at 0.004), its
+  // smallest angle is 14.9 degrees; the largest smallest angle, 21.6 degrees, is at about
+  // (0.224, -0.016). Started at the first, the skewness moves stay; the angle moves go toward the second.
+  typedef CGAL::Epick::Point_3 P;
+  typedef std::array<std::size_t, 3> T;
+  CR::Poly_annulus_segmentation s;
+  std::vector<std::vector<CR::Poly_annulus_segmentation::Vertex> > grid(17);
+  for(int i = 0; i <= 16; ++i)
+    for(int j = 0; j <= 16; ++j)
+      grid[i].push_back(s.mesh.add_vertex(P(-2. + 0.25 * i, -2. + 0.25 * j, 0.)));
+  for(int i = 0; i < 16; ++i)
+    for(int j = 0; j < 16; ++j)
+    {
+      s.mesh.add_face(grid[i][j], grid[i + 1][j], grid[i + 1][j + 1]);
+      s.mesh.add_face(grid[i][j], grid[i + 1][j + 1], grid[i][j + 1]);
+    }
+  std::vector<P> points{P(0., 0.036, 0.), P(-1., -0.5, 0.), P(1., -0.5, 0.), P(0.6, 1., 0.)};
+  const std::vector<T> star{T{{0, 1, 2}}, T{{0, 2, 3}}, T{{0, 3, 1}}};
+  auto smallest_angle = [&](const P& x) {
+    double smallest = 180.;
+    for(const T& t : star)
+    {
+      const std::array<double, 3> a = CR::triangle_quality(x, points[t[1]], points[t[2]]).angles;
+      smallest = (std::min)({smallest, a[0], a[1], a[2]});
+    }
+    return smallest;
+  };
+  const double before = smallest_angle(points[0]);
+  ASSERT_NEAR(before, 14.95, 0.05);
+  std::vector<CR::Poly_annulus_segmentation::Face> point_face(points.size());
+  for(auto f : s.mesh.faces())
+  {
+    const auto h = s.mesh.halfedge(f);
+    if(CGAL::squared_distance(points[0], K::Triangle_3(s.mesh.point(s.mesh.source(h)), s.mesh.point(s.mesh.target(h)),
+                                                       s.mesh.point(s.mesh.target(s.mesh.next(h))))) == 0.)
+      point_face[0] = f;
+  }
+  const std::size_t moves = RM::move_points_after_gluing(s, points, point_face, star, {1, 0, 0, 0}, 30., 10., 5);
+  const double after = smallest_angle(points[0]);
+  std::cout << "smallest angle of the star: " << before << " -> " << after << " degrees (the best: 21.6) in " << moves
+            << " moves; the point at " << points[0] << std::endl;
+  EXPECT_GT(moves, 0u);
+  EXPECT_GT(after, 20.5);
+  EXPECT_LE(after, 21.6);
+  EXPECT_EQ(points[0].z(), 0.);
+}
+
 TEST(MovesAfterGluing, AStarRelaxesOnTheSurfaceButDoesNotCutACreaseOff)
 {
   // A roof z = -slope |x| over [-2, 2]^2 (a crease along x = 0 when the slope is not 0) as the
