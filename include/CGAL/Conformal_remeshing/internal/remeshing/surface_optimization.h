@@ -304,23 +304,9 @@ public:
         worst = (std::max)(worst, Triangle_shape::skewness(positions_[v], positions_[ring[i]], positions_[ring[(i + 1) % ring.size()]]));
       if(worst < threshold)
         return SKIPPED;
-      const double mean = mean_planar_edge(v, ring);
-      const Linear_map_2_3 jacobian = star_jacobian(v, ring);
       const double energy = star_skewness(positions_[v], ring);
-      const double directions[4][2] = {{1., 0.}, {0., 1.}, {-1., 0.}, {0., -1.}};
-      Epick::Vector_2 step = CGAL::NULL_VECTOR;
       double predicted = energy;
-      for(double length = 0.1 * mean; length >= 0.1 * mean / 4.; length *= 0.5)
-        for(const auto& d : directions)
-        {
-          const Epick::Vector_2 candidate = step + Epick::Vector_2(length * d[0], length * d[1]);
-          const double e = star_skewness(positions_[v] + jacobian(candidate), ring);
-          if(e < predicted)
-          {
-            step = candidate;
-            predicted = e;
-          }
-        }
+      const Epick::Vector_2 step = compass_search(v, ring, [&](const Point_3& x) { return star_skewness(x, ring); }, predicted);
       if(!(predicted < energy))
         return REFUSED;
       const double limit = move_limit(positions_[v], ring);
@@ -459,22 +445,9 @@ public:
             below += Triangle_shape::min_angle_cosine(x, positions_[ring[i]], positions_[ring[(i + 1) % ring.size()]]) > cos_target;
           return below;
         };
-        const double mean = mean_planar_edge(v, ring), now = star_worst(positions_[v]);
-        const Linear_map_2_3 jacobian = star_jacobian(v, ring);
-        const double directions[4][2] = {{1., 0.}, {0., 1.}, {-1., 0.}, {0., -1.}};
-        Epick::Vector_2 step = CGAL::NULL_VECTOR;
+        const double now = star_worst(positions_[v]);
         double predicted = now;
-        for(double length = 0.1 * mean; length >= 0.1 * mean / 4.; length *= 0.5)
-          for(const auto& direction : directions)
-          {
-            const Epick::Vector_2 candidate = step + Epick::Vector_2(length * direction[0], length * direction[1]);
-            const double w = star_worst(positions_[v] + jacobian(candidate));
-            if(w < predicted)
-            {
-              step = candidate;
-              predicted = w;
-            }
-          }
+        const Epick::Vector_2 step = compass_search(v, ring, star_worst, predicted);
         // The lifted move must raise the star's smallest angle (the limit) and leave no more of
         // its triangles below the target.
         const int below = below_target(positions_[v]);
@@ -589,6 +562,30 @@ private:
   bool predicts_lower_skewness(int v, const std::vector<int>& ring, const Epick::Vector_3& surface_move, double energy) const
   {
     return star_skewness(positions_[v] + surface_move, ring) < energy;
+  }
+
+  // A compass search for v in the plane (4 directions, steps of 0.1, 0.05 and 0.025 of its mean
+  // planar edge) on `energy` of v's surface point, predicted by the star's linear map: no lift.
+  // `energy` is v's at the start and becomes the smallest found; returns the step to it.
+  template <typename Energy_at>
+  Epick::Vector_2 compass_search(int v, const std::vector<int>& ring, const Energy_at& energy_at, double& energy) const
+  {
+    const double mean = mean_planar_edge(v, ring);
+    const Linear_map_2_3 jacobian = star_jacobian(v, ring);
+    const double directions[4][2] = {{1., 0.}, {0., 1.}, {-1., 0.}, {0., -1.}};
+    Epick::Vector_2 step = CGAL::NULL_VECTOR;
+    for(double length = 0.1 * mean; length >= 0.1 * mean / 4.; length *= 0.5)
+      for(const auto& d : directions)
+      {
+        const Epick::Vector_2 candidate = step + Epick::Vector_2(length * d[0], length * d[1]);
+        const double e = energy_at(positions_[v] + jacobian(candidate));
+        if(e < energy)
+        {
+          step = candidate;
+          energy = e;
+        }
+      }
+    return step;
   }
 
   double mean_planar_edge(int v, const std::vector<int>& ring) const
