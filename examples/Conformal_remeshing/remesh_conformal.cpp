@@ -333,7 +333,8 @@ int main(int argc, char** argv)
           .field("retriangulated_faces", report.retriangulated_faces).field("max_scale_ratio", report.max_scale_ratio).end_object();
       json.field("boundary_samples", report.boundary_samples).field("clamped_vertices", report.clamped_vertices)
           .field("optimization_flips", report.optimization_flips).field("optimization_splits", report.optimization_splits)
-          .field("optimization_chord_splits", report.optimization_chord_splits).field("flips_after_gluing", report.flips_after_gluing)
+          .field("optimization_chord_splits", report.optimization_chord_splits)
+          .field("optimization_collapses", report.optimization_collapses).field("flips_after_gluing", report.flips_after_gluing)
           .field("moves_after_gluing", report.moves_after_gluing)
           .field("self_intersection_refinements", report.self_intersection_refinements);
       json.key("input_quality");

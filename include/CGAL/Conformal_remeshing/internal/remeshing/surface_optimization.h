@@ -41,6 +41,7 @@ struct Surface_optimization_report
   std::size_t angle_changes = 0; ///< flips and moves of the angle passes
   std::size_t splits = 0;        ///< edges split (see `Surface_mesh_optimizer::split_pass()`)
   std::size_t chord_splits = 0;  ///< of those, the edges split because their chord stood off the surface
+  std::size_t collapses = 0;     ///< short edges collapsed (see `Surface_mesh_optimizer::collapse_pass()`)
 };
 
 /// Edges whose chord stands off the surface: longer than `shortest`, with the chord's midpoint
@@ -346,7 +347,7 @@ public:
         const bool too_long = bounds.longest > 0. && length_squared > longest_squared;
         if(!too_long && !(length_squared > shortest_chord_squared))
           continue;
-        if(shares_a_sample_image(a, b, c, d))
+        if(has_two_images_of_a_sample({a, b, c, d}))
           continue;
         const Point_2 m = CGAL::midpoint(points_[a], points_[b]);
         if(CGAL::orientation(points_[c], points_[a], m) != CGAL::POSITIVE || CGAL::orientation(points_[c], m, points_[b]) != CGAL::POSITIVE
@@ -384,6 +385,114 @@ public:
     const Lifted_midpoint lifted{a, b, moves_[a], moves_[b], lift_(m, hint)};
     lifted_midpoints_[3 * t + k] = lifted_midpoints_[3 * u + j] = lifted;
     return lifted.x;
+  }
+
+  /// Collapses the inner edges shorter than `shortest` on the surface, in triangle order: the
+  /// free end goes and the other end, when it is free too, moves to the planar midpoint (lifted);
+  /// a fixed end stays. Both ends must be interior vertices and share no neighbour but the edge's
+  /// two opposite vertices (so the mesh stays a manifold triangulation), and the merged star must
+  /// stay positively oriented in the plane (exact predicate), keep the angle bound, make no edge
+  /// longer than the length bound, no chord the kept bounds name unless it replaces one that stood
+  /// farther off (see `keep_chords()`), and join no vertex to two images of one sample. The split
+  /// passes leave the halves of the edges they split, 0.63 times the target long, and where the
+  /// refinement's lattice of one planar spacing meets a coarser part, clusters of them. Returns
+  /// the number of collapses; `remove_collapsed_vertices()` drops the vertices that went.
+  std::size_t collapse_pass(double shortest)
+  {
+    std::size_t collapses = 0;
+    std::vector<int> ring_a, ring_b, merged;
+    std::vector<char> collapsed_triangle(triangles_.size(), 0);
+    removed_.resize(points_.size(), 0);
+    for(int t = 0; t < int(triangles_.size()); ++t)
+      for(int k = 0; k < 3 && !collapsed_triangle[t]; ++k)
+      {
+        const int u = neighbor_[t][k];
+        if(u < t || collapsed_triangle[u]) // each inner edge once
+          continue;
+        int a = vertex(t, k + 1), b = vertex(t, k + 2);
+        if(!(CGAL::squared_distance(positions_[a], positions_[b]) < shortest * shortest) || (fixed_[a] && fixed_[b])
+           || !interior_ring(a, ring_a) || !interior_ring(b, ring_b))
+          continue;
+        if(fixed_[b])
+        {
+          std::swap(a, b);
+          std::swap(ring_a, ring_b);
+        }
+        // b goes. The merged ring is a's with b replaced by b's ring from after a to before a:
+        // a's ring runs (d, b, c) and b's (c, a, d), with c and d the apexes of t and u.
+        const std::size_t at = std::size_t(std::find(ring_b.begin(), ring_b.end(), a) - ring_b.begin());
+        merged.clear();
+        for(int w : ring_a)
+          if(w != b)
+            merged.push_back(w);
+          else
+            for(std::size_t i = 2; i + 1 < ring_b.size(); ++i)
+              merged.push_back(ring_b[(at + i) % ring_b.size()]);
+        // The link condition: no vertex twice in the merged ring.
+        std::vector<int> sorted(merged);
+        std::sort(sorted.begin(), sorted.end());
+        // A merged vertex of valence above 9 is left: the flips would have to undo it.
+        if(merged.size() < 3 || merged.size() > 9 || std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()
+           || has_two_images_of_a_sample(merged))
+          continue;
+        Point_2 p = points_[a];
+        Point_3 x = positions_[a];
+        std::size_t hint = hints_[a];
+        if(!fixed_[a])
+        {
+          p = CGAL::midpoint(points_[a], points_[b]);
+          x = lift_(p, hint);
+        }
+        const double limit = (std::max)(move_limit(positions_[a], ring_a), move_limit(positions_[b], ring_b));
+        bool valid = true;
+        for(std::size_t i = 0; i < merged.size() && valid; ++i)
+        {
+          const int q = merged[i], r = merged[(i + 1) % merged.size()];
+          valid = CGAL::orientation(p, points_[q], points_[r]) == CGAL::POSITIVE
+                  && Triangle_shape::min_angle_cosine(x, positions_[q], positions_[r]) <= limit
+                  && CGAL::squared_distance(x, positions_[q]) <= longest_squared_;
+        }
+        for(std::size_t i = 0; i < merged.size() && valid; ++i)
+        {
+          const int w = merged[i];
+          const bool of_a = std::find(ring_a.begin(), ring_a.end(), w) != ring_a.end();
+          valid = !cuts_further_under(Chord{p, x, points_[w], positions_[w], hint}, of_a ? chord(a, w) : chord(b, w));
+        }
+        if(!valid)
+          continue;
+        collapse(t, u, a, b, vertex(t, k), vertex(u, opposite_corner(u, t)), p, x, hint);
+        collapsed_triangle[t] = collapsed_triangle[u] = 1;
+        removed_[b] = 1;
+        unsettle(a);
+        for(int w : merged)
+          unsettle(w);
+        ++collapses;
+      }
+    if(collapses > 0)
+      drop_triangles(collapsed_triangle);
+    return collapses;
+  }
+
+  /// Drops the vertices that collapse passes removed (none of the fixed points, which keep their
+  /// indices) and numbers the others in their order. The optimizer is done after this.
+  void remove_collapsed_vertices()
+  {
+    removed_.resize(points_.size(), 0);
+    std::vector<int> index(points_.size(), -1);
+    std::size_t kept = 0;
+    for(std::size_t v = 0; v < points_.size(); ++v)
+      if(!removed_[v])
+      {
+        index[v] = int(kept);
+        points_[kept] = points_[v];
+        positions_[kept] = positions_[v];
+        ++kept;
+      }
+    points_.resize(kept);
+    positions_.resize(kept);
+    for(auto& triangle : triangles_)
+      for(int& v : triangle)
+        v = index[v];
   }
 
   /// From now on, no flip or move makes a chord that `bounds` names (see `split_pass()`), unless
@@ -804,12 +913,12 @@ private:
       unsettle(v);
   }
 
-  // Whether two of the vertices are images of one sample (the sides of a slit): a vertex inside
-  // their quad would be joined to both.
-  bool shares_a_sample_image(int a, int b, int c, int d) const
+  // Whether two of the vertices are images of one sample (the sides of a slit): a vertex joined
+  // to both, or inside a quad of both, would join them.
+  bool has_two_images_of_a_sample(const std::vector<int>& vertices) const
   {
     std::vector<std::size_t> ids;
-    for(int v : {a, b, c, d})
+    for(int v : vertices)
       if(std::size_t(v) < sample_ids_.size())
         ids.push_back(sample_ids_[std::size_t(v)]);
     std::sort(ids.begin(), ids.end());
@@ -853,6 +962,80 @@ private:
       unsettle(v);
   }
 
+  // Collapses the edge a-b of t = (c, ., .) and u = (d, ., .) into a, which moves to (p, x): b's
+  // triangles become a's; t and u are unlinked and stay in the arrays until drop_triangles().
+  void collapse(int t, int u, int a, int b, int c, int d, const Point_2& p, const Point_3& x, std::size_t hint)
+  {
+    const int t_ca = across(t, c, a), t_cb = across(t, c, b), u_da = across(u, d, a), u_db = across(u, d, b);
+    std::vector<int> fan;
+    const int first = incident_[b];
+    int f = first;
+    do
+    {
+      fan.push_back(f);
+      const int k = vertex(f, 0) == b ? 0 : (vertex(f, 1) == b ? 1 : 2);
+      f = neighbor_[f][(k + 1) % 3];
+    }
+    while(f != first);
+    for(int g : fan)
+      for(int& v : triangles_[g])
+        if(v == b)
+          v = a;
+    relink(t_ca, t, t_cb);
+    relink(t_cb, t, t_ca);
+    relink(u_da, u, u_db);
+    relink(u_db, u, u_da);
+    neighbor_[t] = neighbor_[u] = {{-1, -1, -1}};
+    incident_[a] = incident_[c] = t_ca;
+    incident_[d] = u_da;
+    incident_[b] = -1;
+    fixed_[b] = 1;
+    valence_[a] += valence_[b] - 4;
+    --valence_[c];
+    --valence_[d];
+    points_[a] = p;
+    positions_[a] = x;
+    hints_[a] = hint;
+    ++moves_[a];
+  }
+
+  // The neighbour of triangle f across its edge p-q.
+  int across(int f, int p, int q) const
+  {
+    for(int i = 0; i < 3; ++i)
+    {
+      const int v = vertex(f, i + 1), w = vertex(f, i + 2);
+      if((v == p && w == q) || (v == q && w == p))
+        return neighbor_[f][i];
+    }
+    return -1;
+  }
+
+  // Drops the triangles `dropped` names and numbers the others in their order.
+  void drop_triangles(const std::vector<char>& dropped)
+  {
+    std::vector<int> index(triangles_.size(), -1);
+    std::size_t kept = 0;
+    for(std::size_t t = 0; t < triangles_.size(); ++t)
+      if(!dropped[t])
+      {
+        index[t] = int(kept);
+        triangles_[kept] = triangles_[t];
+        neighbor_[kept] = neighbor_[t];
+        ++kept;
+      }
+    triangles_.resize(kept);
+    neighbor_.resize(kept);
+    for(auto& neighbors : neighbor_)
+      for(int& u : neighbors)
+        if(u >= 0)
+          u = index[u];
+    for(int& t : incident_)
+      if(t >= 0)
+        t = index[t];
+    lifted_midpoints_.clear(); // by half-edge
+  }
+
   void relink(int w, int from, int to)
   {
     if(w < 0)
@@ -875,6 +1058,7 @@ private:
   std::vector<unsigned char> settled_;
   std::vector<unsigned> moves_; // how many times each vertex moved
   std::vector<std::size_t> hints_; // where each vertex was found by its last lift (see `Lift`)
+  std::vector<char> removed_; // the vertices that collapse passes removed
   bool parallel_ = false;
   struct Lifted_midpoint
   {
@@ -892,7 +1076,10 @@ private:
 /// more rounds, and up to two more splits of what the rounds made, each with one more round
 /// (from the first split on, no flip or move makes an edge longer than `split.longest`, when
 /// that is set, unless it replaces a longer one, nor a chord across a bend that
-/// `split.across_bend` names, unless it replaces a deeper one); then skewness passes, which
+/// `split.across_bend` names, unless it replaces a deeper one); then, when `shortest_edge` is
+/// positive, a collapse of the interior edges shorter than it on the surface and one more round
+/// (the collapsed vertices are removed at the end, and the others numbered in their order; the
+/// first `number_of_fixed_points` keep their indices); then skewness passes, which
 /// also make no chord `split.tight_curve` names, and angle passes toward 30 degrees (see
 /// `Surface_mesh_optimizer`). `points` and `triangles` are the planar mesh (counterclockwise
 /// triangles of a manifold domain), `positions` the surface points of its vertices (the splits'
@@ -910,7 +1097,7 @@ Surface_optimization_report optimize_on_surface(std::vector<Epick::Point_2>& poi
                                                 const Lift& lift, double angle_bound_degrees, double longest_edge, const Edge_split_bounds& split, int rounds,
                                                 const std::vector<std::size_t>& sample_ids = {},
                                                 const std::set<std::pair<std::size_t, std::size_t> >& forbidden_diagonals = {},
-                                                bool in_parallel = false)
+                                                bool in_parallel = false, double shortest_edge = 0.)
 {
   Surface_optimization_report report;
   if(rounds <= 0 || triangles.empty())
@@ -957,6 +1144,15 @@ Surface_optimization_report optimize_on_surface(std::vector<Epick::Point_2>& poi
       flip_and_smooth();
     }
   }
+  // The short edges the splits and the refinement leave are collapsed (keeping both chord bounds,
+  // as nothing splits after this), and one more round evens out what that changed.
+  if(shortest_edge > 0.)
+  {
+    optimizer.keep_chords(split);
+    report.collapses = optimizer.collapse_pass(shortest_edge);
+    optimizer.keep_chords(bends);
+    flip_and_smooth();
+  }
   optimizer.keep_chords(split);
   for(int pass = 0; pass < 3; ++pass)
     report.moves += optimizer.skewness_pass(0.12);
@@ -965,6 +1161,7 @@ Surface_optimization_report optimize_on_surface(std::vector<Epick::Point_2>& poi
   optimizer.keep_chords(bends);
   for(int pass = 0; pass < 3; ++pass)
     report.angle_changes += optimizer.angle_pass((std::max)(30., angle_bound_degrees));
+  optimizer.remove_collapsed_vertices();
   return report;
 }
 
