@@ -251,7 +251,7 @@ constexpr double tight_curve_split_factor = 0.045, shortest_tight_curve_split_fa
 // the coarser mesh from the border, where the splits then pile up: 5.4% of the fine cap's edges
 // were under 0.7 h. With the collapses, 0.6%; every model of the remeshing benchmark has 98.8%
 // to 99.5% of its edges within [0.7, 1.4] h (the elephant 94.8%, the 100k brake disc 88.2%,
-// from 94.4% and 74.4%), a mean skewness 0.002 to 0.007 lower and 0.1% to 9% fewer vertices
+// from 94.4% and 74.4%), a mean skewness 0.002 to 0.007 lower and 0.2% to 8.5% fewer vertices
 // (tool defaults, 2026-11-27). Without the round after the collapses, the elephant kept a
 // triangle of 23.6 degrees.
 constexpr double collapse_edge_factor = 0.7;
