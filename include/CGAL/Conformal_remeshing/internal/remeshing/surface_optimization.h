@@ -404,8 +404,8 @@ public:
           std::swap(a, b);
           std::swap(ring_a, ring_b);
         }
-        // b goes. The merged ring is a's with b replaced by b's ring from after a to before a:
-        // a's ring runs (d, b, c) and b's (c, a, d), with c and d the apexes of t and u.
+        // b goes. The merged ring is a's with b replaced by b's ring strictly between the apexes
+        // of t and u: a's ring runs (x, b, y) and b's (y, a, x), x and y those apexes.
         const std::size_t at = std::size_t(std::find(ring_b.begin(), ring_b.end(), a) - ring_b.begin());
         merged.clear();
         for(int w : ring_a)
