@@ -351,7 +351,7 @@ public:
         const bool too_long = bounds.longest > 0. && length_squared > longest_squared;
         if(!is_candidate(length_squared))
           continue;
-        if(has_two_images_of_a_sample({a, b, c, d}))
+        if(has_two_images_of_a_sample(std::array<int, 4>{{a, b, c, d}}))
           continue;
         const Point_2 m = CGAL::midpoint(points_[a], points_[b]);
         if(CGAL::orientation(points_[c], points_[a], m) != CGAL::POSITIVE || CGAL::orientation(points_[c], m, points_[b]) != CGAL::POSITIVE
@@ -464,18 +464,7 @@ public:
   void remove_collapsed_vertices()
   {
     removed_.resize(points_.size(), 0);
-    std::vector<int> index(points_.size(), -1);
-    std::size_t kept = 0;
-    for(std::size_t v = 0; v < points_.size(); ++v)
-      if(!removed_[v])
-      {
-        index[v] = int(kept);
-        points_[kept] = points_[v];
-        positions_[kept] = positions_[v];
-        ++kept;
-      }
-    points_.resize(kept);
-    positions_.resize(kept);
+    const std::vector<int> index = keep_undropped(removed_, points_, positions_);
     for(auto& triangle : triangles_)
       for(int& v : triangle)
         v = index[v];
@@ -906,9 +895,30 @@ private:
       unsettle(v);
   }
 
+  // Keeps the entries of the parallel arrays `first` and `second` that `dropped` does not name,
+  // in their order, and returns each old index's new one (-1 for a dropped entry).
+  template <typename First, typename Second>
+  static std::vector<int> keep_undropped(const std::vector<char>& dropped, First& first, Second& second)
+  {
+    std::vector<int> index(first.size(), -1);
+    std::size_t kept = 0;
+    for(std::size_t i = 0; i < first.size(); ++i)
+      if(!dropped[i])
+      {
+        index[i] = int(kept);
+        first[kept] = first[i];
+        second[kept] = second[i];
+        ++kept;
+      }
+    first.resize(kept);
+    second.resize(kept);
+    return index;
+  }
+
   // Whether two of the vertices are images of one sample (the sides of a slit): a vertex joined
   // to both, or inside a quad of both, would join them.
-  bool has_two_images_of_a_sample(const std::vector<int>& vertices) const
+  template <typename Vertices>
+  bool has_two_images_of_a_sample(const Vertices& vertices) const
   {
     std::vector<std::size_t> ids;
     for(int v : vertices)
@@ -1078,18 +1088,7 @@ private:
   // Drops the triangles `dropped` names and numbers the others in their order.
   void drop_triangles(const std::vector<char>& dropped)
   {
-    std::vector<int> index(triangles_.size(), -1);
-    std::size_t kept = 0;
-    for(std::size_t t = 0; t < triangles_.size(); ++t)
-      if(!dropped[t])
-      {
-        index[t] = int(kept);
-        triangles_[kept] = triangles_[t];
-        neighbor_[kept] = neighbor_[t];
-        ++kept;
-      }
-    triangles_.resize(kept);
-    neighbor_.resize(kept);
+    const std::vector<int> index = keep_undropped(dropped, triangles_, neighbor_);
     for(auto& neighbors : neighbor_)
       for(int& u : neighbors)
         if(u >= 0)
