@@ -52,33 +52,47 @@ inline std::vector<std::size_t> kept_input_vertices(const Extracted_patch& patch
   typedef Extracted_patch::Mesh Mesh;
   const Mesh& m = patch.mesh;
   std::vector<std::pair<double, std::size_t> > candidates; // (height of the cut tip, vertex)
+  std::vector<Epick::Point_3> ring;
   for(Mesh::Vertex_index v : m.vertices())
   {
     if(m.is_border(v))
       continue;
     const Epick::Point_3& p = m.point(v);
-    std::vector<Epick::Point_3> ring;
+    ring.clear();
     for(Mesh::Vertex_index w : CGAL::vertices_around_target(m.halfedge(v), m))
       ring.push_back(m.point(w));
     Epick::Vector_3 normal = CGAL::NULL_VECTOR, to_centroid = CGAL::NULL_VECTOR;
-    double radius = 0., angle_sum = 0.;
+    double radius = 0.;
     for(std::size_t i = 0; i < ring.size(); ++i)
     {
       const Epick::Vector_3 u = ring[i] - p, w = ring[(i + 1) % ring.size()] - p;
-      angle_sum += std::atan2(std::sqrt(CGAL::cross_product(u, w).squared_length()), u * w);
       normal = normal + CGAL::cross_product(u, w);
       to_centroid = to_centroid + u;
       radius += std::sqrt(u.squared_length());
     }
     radius /= double(ring.size());
     const double area = std::sqrt(normal.squared_length());
-    const bool sharp = std::abs(2. * CGAL_PI - angle_sum) > 0.5 && radius > 0.5 * h;
-    if(!(area > 0.) || !(sharp || radius > 2.5 * h))
+    if(!(area > 0.))
       continue;
     const double height = std::abs(to_centroid * normal) / (double(ring.size()) * area);
     const double cut = height * (std::min)(radius, 0.6 * h) / radius;
-    if(cut > tolerance * h)
-      candidates.emplace_back(cut, std::size_t(v));
+    // The angle sum last: its arc tangents were most of this search on a fine input, whose
+    // vertices' tips are far lower than the tolerance.
+    if(!(cut > tolerance * h))
+      continue;
+    if(!(radius > 2.5 * h))
+    {
+      double angle_sum = 0.;
+      for(std::size_t i = 0; i < ring.size(); ++i)
+      {
+        const Epick::Vector_3 u = ring[i] - p, w = ring[(i + 1) % ring.size()] - p;
+        angle_sum += std::atan2(std::sqrt(CGAL::cross_product(u, w).squared_length()), u * w);
+      }
+      const bool sharp = std::abs(2. * CGAL_PI - angle_sum) > 0.5 && radius > 0.5 * h;
+      if(!sharp)
+        continue;
+    }
+    candidates.emplace_back(cut, std::size_t(v));
   }
   std::sort(candidates.begin(), candidates.end(), std::greater<std::pair<double, std::size_t> >());
   // The points taken so far in a grid of cells of size h: a new one looks at 27 cells.
