@@ -386,7 +386,7 @@ public:
   std::size_t collapse_pass(double shortest)
   {
     std::size_t collapses = 0;
-    std::vector<int> ring_a, ring_b, merged;
+    std::vector<int> ring_a, ring_b, merged, sorted;
     std::vector<char> collapsed_triangle(triangles_.size(), 0);
     removed_.resize(points_.size(), 0);
     for(int t = 0; t < int(triangles_.size()); ++t)
@@ -415,7 +415,7 @@ public:
             for(std::size_t i = 2; i + 1 < ring_b.size(); ++i)
               merged.push_back(ring_b[(at + i) % ring_b.size()]);
         // The link condition: no vertex twice in the merged ring.
-        std::vector<int> sorted(merged);
+        sorted.assign(merged.begin(), merged.end());
         std::sort(sorted.begin(), sorted.end());
         // A merged vertex of valence above 9 is left: the flips would have to undo it.
         if(merged.size() < 3 || merged.size() > 9 || std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end()
@@ -856,20 +856,28 @@ private:
   bool interior_ring(int v, std::vector<int>& ring) const
   {
     ring.clear();
+    return for_each_star_triangle(v, [&](int t, int k) { ring.push_back(vertex(t, k + 1)); }) && ring.size() >= 3;
+  }
+
+  // Calls `visit(t, k)` for every triangle t of v's star, v at its corner k, counterclockwise;
+  // false (after a partial walk) for a vertex on the boundary, or with more than 64 triangles.
+  template <typename Visit>
+  bool for_each_star_triangle(int v, const Visit& visit) const
+  {
     const int first = incident_[v];
     if(first < 0)
       return false;
-    int t = first;
+    int t = first, count = 0;
     do
     {
       const int k = vertex(t, 0) == v ? 0 : (vertex(t, 1) == v ? 1 : 2);
-      ring.push_back(vertex(t, k + 1));
+      visit(t, k);
       t = neighbor_[t][(k + 1) % 3]; // across the edge from v to the next ring vertex
-      if(t < 0 || ring.size() > 64)
+      if(t < 0 || ++count > 64)
         return false;
     }
     while(t != first);
-    return ring.size() >= 3;
+    return true;
   }
 
   // Flips the edge opposite corner k of t, shared with corner j of u:
@@ -1041,20 +1049,10 @@ private:
   void collapse(int t, int u, int a, int b, int c, int d, const Point_2& p, const Point_3& x, std::size_t hint)
   {
     const int t_ca = across(t, c, a), t_cb = across(t, c, b), u_da = across(u, d, a), u_db = across(u, d, b);
-    std::vector<int> fan;
-    const int first = incident_[b];
-    int f = first;
-    do
-    {
-      fan.push_back(f);
-      const int k = vertex(f, 0) == b ? 0 : (vertex(f, 1) == b ? 1 : 2);
-      f = neighbor_[f][(k + 1) % 3];
-    }
-    while(f != first);
-    for(int g : fan)
-      for(int& v : triangles_[g])
-        if(v == b)
-          v = a;
+    std::vector<std::pair<int, int> > fan; // b's triangles and its corner in each
+    for_each_star_triangle(b, [&](int f, int k) { fan.emplace_back(f, k); });
+    for(const auto& f : fan)
+      triangles_[f.first][f.second] = a;
     relink(t_ca, t, t_cb);
     relink(t_cb, t, t_ca);
     relink(u_da, u, u_db);
