@@ -160,7 +160,7 @@ public:
   /// the most triangles a star may have
   static constexpr std::size_t max_ring_size = 64;
 
-  /// `ring` (at most `max_ring_size` vertices, counterclockwise) indexes `positions`
+  /// `ring` (at most `max_ring_size` vertices, in the order of the star's triangles) indexes `positions`
   Moving_star(const std::vector<Point_3>& positions, const std::vector<int>& ring) : size_(ring.size())
   {
     CGAL_precondition(size_ <= max_ring_size);
