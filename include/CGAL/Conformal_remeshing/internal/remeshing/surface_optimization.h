@@ -638,6 +638,36 @@ private:
     SKIPPED
   };
 
+  // The rings of the vertices a move pass may move (free, interior, not settled for its kind), in
+  // index order: the ring of `vertices[i]` is `neighbors[start[i]]` to `neighbors[start[i + 1]]`.
+  // No flip happens during a pass, so each ring is walked once, for the classes, the moves and
+  // the stars to unsettle (three walks each before).
+  struct Pass_rings
+  {
+    std::vector<int> vertices;
+    std::vector<std::size_t> start{0};
+    std::vector<int> neighbors;
+
+    void copy_ring(std::size_t i, std::vector<int>& ring) const
+    {
+      ring.assign(neighbors.begin() + std::ptrdiff_t(start[i]), neighbors.begin() + std::ptrdiff_t(start[i + 1]));
+    }
+  };
+
+  Pass_rings rings_to_move(Settled kind) const
+  {
+    Pass_rings rings;
+    std::vector<int> ring;
+    for(std::size_t v = 0; v < points_.size(); ++v)
+      if(!fixed_[v] && !(settled_[v] & kind) && interior_ring(int(v), ring))
+      {
+        rings.vertices.push_back(int(v));
+        rings.neighbors.insert(rings.neighbors.end(), ring.begin(), ring.end());
+        rings.start.push_back(rings.neighbors.size());
+      }
+    return rings;
+  }
+
   // Runs `move(v, ring)` on every free interior vertex not settled for `kind`, class by class of
   // `independent_classes()`. No two vertices of a class are neighbours, so the move of one reads
   // its star and writes its own vertex only, which no other move of its class reads: the moves of
@@ -647,50 +677,54 @@ private:
   std::size_t move_pass(Settled kind, const Move& move)
   {
     std::size_t moves = 0;
-    std::vector<int> ring;
-    for(const std::vector<int>& vertices : independent_classes(kind))
+    const Pass_rings rings = rings_to_move(kind);
+    for(const std::vector<std::size_t>& members : independent_classes(rings))
     {
-      std::vector<char> outcome(vertices.size(), SKIPPED);
-      for_each_block(parallel_, vertices.size(), 64, [&](std::size_t begin, std::size_t end) {
+      std::vector<char> outcome(members.size(), SKIPPED);
+      for_each_block(parallel_, members.size(), 64, [&](std::size_t begin, std::size_t end) {
         std::vector<int> star;
         for(std::size_t i = begin; i < end; ++i)
-          if(interior_ring(vertices[i], star))
-            outcome[i] = char(move(vertices[i], star));
+        {
+          rings.copy_ring(members[i], star);
+          outcome[i] = char(move(rings.vertices[members[i]], star));
+        }
       });
-      for(std::size_t i = 0; i < vertices.size(); ++i)
+      for(std::size_t i = 0; i < members.size(); ++i) // no two are neighbours: any order will do
+      {
+        const std::size_t m = members[i];
         if(outcome[i] == REFUSED)
-          settled_[vertices[i]] |= kind;
-      for(std::size_t i = 0; i < vertices.size(); ++i)
-        if(outcome[i] == MOVED && interior_ring(vertices[i], ring))
+          settled_[rings.vertices[m]] |= kind;
+        else if(outcome[i] == MOVED)
         {
           ++moves;
-          unsettle_star(vertices[i], ring);
+          unsettle(rings.vertices[m]);
+          for(std::size_t k = rings.start[m]; k < rings.start[m + 1]; ++k)
+            unsettle(rings.neighbors[k]);
         }
+      }
     }
     return moves;
   }
 
-  // The free interior vertices not settled for `kind`, in classes of which no two are
-  // neighbours: each vertex, in index order, joins the first class that has none of its
-  // neighbours. Refinement meshes need about seven.
-  std::vector<std::vector<int> > independent_classes(Settled kind) const
+  // The vertices of `rings` (as indices into it) in classes of which no two are neighbours: each
+  // vertex, in index order, joins the first class that has none of its neighbours. Refinement
+  // meshes need about seven.
+  std::vector<std::vector<std::size_t> > independent_classes(const Pass_rings& rings) const
   {
-    std::vector<std::vector<int> > classes;
-    std::vector<int> class_of(points_.size(), -1), ring;
+    std::vector<std::vector<std::size_t> > classes;
+    std::vector<int> class_of(points_.size(), -1);
     std::vector<char> taken;
-    for(std::size_t v = 0; v < points_.size(); ++v)
+    for(std::size_t i = 0; i < rings.vertices.size(); ++i)
     {
-      if(fixed_[v] || (settled_[v] & kind) || !interior_ring(int(v), ring))
-        continue;
       taken.assign(classes.size() + 1, 0);
-      for(int w : ring)
-        if(class_of[w] >= 0)
-          taken[std::size_t(class_of[w])] = 1;
+      for(std::size_t k = rings.start[i]; k < rings.start[i + 1]; ++k)
+        if(class_of[rings.neighbors[k]] >= 0)
+          taken[std::size_t(class_of[rings.neighbors[k]])] = 1;
       const std::size_t c = std::size_t(std::find(taken.begin(), taken.end(), 0) - taken.begin());
       if(c == classes.size())
         classes.emplace_back();
-      classes[c].push_back(int(v));
-      class_of[v] = int(c);
+      classes[c].push_back(i);
+      class_of[rings.vertices[i]] = int(c);
     }
     return classes;
   }
