@@ -861,8 +861,6 @@ private:
     return -1;
   }
 
-
-
   // The largest cosine of a smallest angle a move may leave in the star: the bound, or the
   // star's smallest angle if that is already below it.
   double move_limit(const Point_3& x, const std::vector<int>& ring) const
