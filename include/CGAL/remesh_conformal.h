@@ -373,7 +373,8 @@ public:
   struct Lifted
   {
     Conformal_flattening::Patch_location on_patch;
-    bool clamped; // outside every flat triangle by rounding, moved onto the nearest one
+    bool clamped;         // outside every flat triangle by rounding, moved onto the nearest one
+    std::size_t triangle; // the flat triangle it was found in
   };
 
   Surface_map_with_hints(const Conformal_flattening& flat, const Planar_locator& locator)
@@ -392,7 +393,7 @@ public:
     const Planar_locator::Location l = locator_.locate(p, hint_);
     found_[slot(p)] = Found{p.x(), p.y(), l.triangle};
     return Lifted{flat_.patch_location_of_triangle(l.triangle, l.coordinates),
-                  (std::min)({l.coordinates[0], l.coordinates[1], l.coordinates[2]}) == 0.};
+                  (std::min)({l.coordinates[0], l.coordinates[1], l.coordinates[2]}) == 0., l.triangle};
   }
 
 private:
@@ -549,8 +550,13 @@ inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, c
     };
     std::vector<Epick::Point_3> positions(sample_points); // the samples, in loop order, first
     positions.resize(planar.points.size());
+    std::vector<std::size_t> hints(planar.points.size(), Planar_locator::no_hint); // where each was found
     for(std::size_t i : interior_points_in_space_order())
-      positions[i] = flat.surface_point(surface_map.lift(planar.points[i]).on_patch);
+    {
+      const Surface_map_with_hints::Lifted lifted = surface_map.lift(planar.points[i]);
+      positions[i] = flat.surface_point(lifted.on_patch);
+      hints[i] = lifted.triangle;
+    }
     Edge_split_bounds split_bounds;
     split_bounds.longest = split_edge_factor * sizing.target();
     split_bounds.across_bend = {shortest_off_surface_split_factor * sizing.target(), off_surface_split_factor * sizing.target()};
@@ -559,7 +565,7 @@ inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, c
       optimize_on_surface(planar.points, positions, planar.triangles, planar.number_of_fixed_points, lift, min_angle,
                           longest_edge_factor * sizing.target(), split_bounds, optimization_rounds,
                           result.boundary_ids, diagonals_to_split, moves_in_parallel,
-                          sizing.is_uniform() ? collapse_edge_factor * sizing.target() : 0.);
+                          sizing.is_uniform() ? collapse_edge_factor * sizing.target() : 0., hints);
   }
   result.seconds_optimization = std::chrono::duration<double>(Clock::now() - start).count();
   // The optimizer keeps every chord (it never flips a boundary edge) and makes none of the

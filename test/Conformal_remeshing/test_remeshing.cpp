@@ -1178,6 +1178,51 @@ TEST(PlanarMesher, AHintedSizeFieldGivesTheSameMeshAndIsAskedFromNearby)
   EXPECT_GT(quantile(r.from_last, 0.9), 4. * quantile(r.from_hint, 0.9));
 }
 
+TEST(PlanarMesher, TheQueueOfBadFacesRefinesInCgalsOrder)
+{
+  // Bad_face_queue_2 keeps the corners of each queued face in its key and skips the faces of a
+  // conflict zone that are not queued: the refinement must insert the same points in the same
+  // order as with CGAL's own queue (Mesh_2::Refine_faces_base), whose order among faces of equal
+  // quality comes from its map of faces by corners. A square with a round hole, sampled evenly
+  // (many faces of equal quality), and a size field that varies.
+  typedef RM::Planar_triangulation<CGAL::Epick>::type CDT;
+  const auto size = [](const CGAL::Epick::Point_2& p) { return 0.03 + 0.05 * std::abs(p.x() + 0.5 * p.y()); };
+  typedef RM::Size_field_criteria_2<CDT, decltype(size)> Criteria;
+  const auto refined = [&](auto mesher_tag) {
+    CDT cdt;
+    const auto loop = [&cdt](const std::vector<CGAL::Epick::Point_2>& points) {
+      std::vector<CDT::Vertex_handle> v;
+      for(const auto& p : points)
+        v.push_back(cdt.insert(p));
+      for(std::size_t i = 0; i < v.size(); ++i)
+        cdt.insert_constraint(v[i], v[(i + 1) % v.size()]);
+    };
+    std::vector<CGAL::Epick::Point_2> square, hole;
+    for(int i = 0; i < 40; ++i)
+    {
+      const double t = -1. + i / 20.;
+      for(const CGAL::Epick::Point_2& p : {CGAL::Epick::Point_2(t, -1.), CGAL::Epick::Point_2(1., t), CGAL::Epick::Point_2(-t, 1.),
+                                           CGAL::Epick::Point_2(-1., -t)})
+        square.push_back(p);
+      hole.push_back(CGAL::Epick::Point_2(0.3 + 0.2 * std::cos(-i * CGAL_PI / 20.), 0.2 * std::sin(-i * CGAL_PI / 20.)));
+    }
+    loop(square);
+    loop(hole);
+    RM::mark_domain(cdt);
+    typename decltype(mesher_tag)::type mesher(cdt, Criteria(CGAL::square(std::sin(20.7 * CGAL_PI / 180.)), size));
+    mesher.refine_mesh();
+    std::vector<CGAL::Epick::Point_2> points; // in the order of insertion: the refinement removes none
+    for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+      points.push_back(v->point());
+    return points;
+  };
+  struct Ours { typedef RM::Fixed_boundary_mesher_2<CDT, Criteria> type; };
+  struct Cgals { typedef RM::Fixed_boundary_mesher_2<CDT, Criteria, CGAL::Mesh_2::Refine_faces_base> type; };
+  const std::vector<CGAL::Epick::Point_2> ours = refined(Ours()), cgals = refined(Cgals());
+  EXPECT_GT(ours.size(), 2000u);
+  EXPECT_EQ(ours, cgals);
+}
+
 // The map from the plane to a unit cylinder that is conformal, (r, theta) -> (cos theta,
 // sin theta, log r): the scale grows like exp(z) along it, as on a flattened tube.
 bool onto_unit_cylinder(const CGAL::Epick::Point_2& p, CGAL::Epick::Point_3& x)

@@ -651,7 +651,7 @@ inline std::vector<std::array<std::size_t, 3> > grid_face_triangles(const Plate_
                                                                      std::vector<Planar_point>& interior)
 {
   typedef CGAL::Triangulation_vertex_base_with_info_2<std::size_t, Planar_kernel> Vb;
-  typedef CGAL::Delaunay_mesh_face_base_2<Planar_kernel> Fb;
+  typedef CGAL::Conformal_remeshing::internal::remeshing::Planar_face_base_2<Planar_kernel> Fb; // for mark_domain()
   typedef CGAL::Constrained_Delaunay_triangulation_2<Planar_kernel, CGAL::Triangulation_data_structure_2<Vb, Fb>,
                                                      CGAL::Exact_predicates_tag> CDT;
   CDT cdt;

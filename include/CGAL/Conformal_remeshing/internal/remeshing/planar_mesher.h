@@ -17,18 +17,18 @@
 #include <CGAL/Mesh_2/Do_not_refine_edges.h>
 #include <CGAL/Mesh_2/Refine_edges.h>
 #include <CGAL/Mesh_2/Refine_faces.h>
+#include <CGAL/Triangulation_face_base_with_info_2.h>
+#include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
 #include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <functional>
-#include <list>
 #include <map>
 #include <memory>
 #include <set>
 #include <type_traits>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -345,9 +345,162 @@ public:
 
   Is_bad is_bad_object() const { return Is_bad(this->bound(), size_, corner_sizes_, this->traits); }
 
+  /// Where the size field found `p`, if `p` was the corner of a face judged before (a search near
+  /// `p` starts best there), else `no_size_field_hint`.
+  Size_field_hint hint_at(const Epick::Point_2& p) const
+  {
+    const Corner_size* known = corner_sizes_->find(p);
+    return known == nullptr ? no_size_field_hint : known->hint;
+  }
+
 private:
   Size_field size_;
   std::shared_ptr<Corner_sizes> corner_sizes_;
+};
+
+/// What the planar mesher keeps in each face of its triangulation.
+struct Planar_face_info
+{
+  int depth = -1;      ///< nesting depth in the loops, for `mark_domain()`
+  bool queued = false; ///< in the refinement's queue of bad faces (see `Bad_face_queue_2`)
+};
+
+/// The refinement's queue of bad faces: CGAL's `Mesh_2::Refine_faces_base`, the base of
+/// `Mesh_2::Refine_faces`, with the same faces in the same order, at less cost. Its map orders
+/// the faces by their corner points (`Double_map`: the queue's order among faces of equal quality
+/// depends on that order, so it is kept), which it read through the face and its vertices at each
+/// comparison: a key now holds a copy of the corners. A face flags itself as queued
+/// (`Planar_face_info`), so that only the faces of a conflict zone that are queued are searched
+/// for, not all of them. The faces' info must be `Planar_face_info`; the corners of a queued face
+/// must not change, which holds when insertions replace conflict zones (no flip), as the faces
+/// level of `Fixed_boundary_mesher_2` does. `Criteria` must be `Size_field_criteria_2`-like: its
+/// `Is_bad` object is made once.
+template <typename Tr, typename Criteria, typename Previous>
+class Bad_face_queue_2 : public CGAL::Triangulation_mesher_level_traits_2<Tr>,
+                         public CGAL::No_test_point_conflict,
+                         public CGAL::No_after_no_insertion
+{
+  typedef CGAL::Triangulation_mesher_level_traits_2<Tr> Traits;
+  typedef typename Tr::Face_handle Face_handle;
+  typedef typename Tr::Vertex_handle Vertex_handle;
+  typedef typename Tr::Point Point;
+  typedef typename Traits::Zone Zone;
+  typedef typename Criteria::Quality Quality;
+
+  struct Face_key
+  {
+    std::array<Point, 3> corner;
+    Face_handle face;
+    // one face per corners: a triangulation has no two faces with the same corners in order
+    friend bool operator==(const Face_key& a, const Face_key& b) { return a.corner == b.corner; }
+  };
+  // `Refine_faces_base`'s order: lexicographic on the corners, each compared with `<` and `==`.
+  struct Face_key_less
+  {
+    bool operator()(const Face_key& a, const Face_key& b) const
+    {
+      for(int i = 0; i < 3; ++i)
+      {
+        if(a.corner[i] < b.corner[i])
+          return true;
+        if(!(a.corner[i] == b.corner[i]))
+          return false;
+      }
+      return false;
+    }
+  };
+
+public:
+  typedef CGAL::Double_map<Face_key, Quality, Face_key_less> Bad_faces;
+
+  Bad_face_queue_2(Tr& t, Criteria& criteria, Previous& previous)
+    : Traits(t), is_bad_(criteria.is_bad_object()), previous_(previous)
+  {}
+
+  // The Mesher_level functions (see `CGAL::Mesher_level`).
+
+  void scan_triangulation_impl()
+  {
+    bad_faces_.clear();
+    for(Face_handle f : this->triangulation_ref_impl().finite_face_handles())
+    {
+      f->info().queued = false;
+      if(f->is_in_domain())
+        queue_if_bad(f);
+    }
+  }
+
+  Zone conflicts_zone_impl(const Point& p, Face_handle f)
+  {
+    Zone zone;
+    zone.fh = this->triangulation_ref_impl().locate(p, zone.locate_type, zone.i, f);
+    zone.parent_face = f;
+    this->triangulation_ref_impl().get_conflicts_and_boundary(p, std::back_inserter(zone.faces),
+                                                               std::back_inserter(zone.boundary_edges), f);
+    return zone;
+  }
+
+  bool no_longer_element_to_refine_impl() const { return bad_faces_.empty(); }
+
+  Face_handle get_next_element_impl()
+  {
+    current_badness_ = is_bad_(bad_faces_.front()->first);
+    return bad_faces_.front()->second.face;
+  }
+
+  void pop_next_element_impl()
+  {
+    bad_faces_.front()->second.face->info().queued = false;
+    bad_faces_.pop_front();
+  }
+
+  Point refinement_point_impl(const Face_handle& f) const { return this->triangulation_ref_impl().circumcenter(f); }
+
+  void before_conflicts_impl(const Face_handle&, const Point&)
+  {
+    previous_.set_imperative_refinement(current_badness_ == Mesh_2::IMPERATIVELY_BAD);
+  }
+
+  // The conflict zone's faces leave the domain (and the queue): the new faces take their place.
+  void before_insertion_impl(const Face_handle&, const Point&, Zone& zone)
+  {
+    for(const Face_handle f : zone.faces)
+    {
+      if(f->info().queued)
+      {
+        bad_faces_.erase(key(f));
+        f->info().queued = false;
+      }
+      f->set_in_domain(false);
+    }
+  }
+
+  void after_insertion_impl(const Vertex_handle& v)
+  {
+    auto f = this->triangulation_ref_impl().incident_faces(v), done = f;
+    do
+      f->set_in_domain(true);
+    while(++f != done);
+    do
+      if(!this->triangulation_ref_impl().is_infinite(f))
+        queue_if_bad(f);
+    while(++f != done);
+  }
+
+private:
+  static Face_key key(Face_handle f) { return Face_key{{{f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()}}, f}; }
+
+  void queue_if_bad(Face_handle f)
+  {
+    Quality q;
+    if(is_bad_(f, q) != Mesh_2::NOT_BAD && bad_faces_.insert(key(f), q))
+      f->info().queued = true;
+  }
+
+  typename Criteria::Is_bad is_bad_;
+  Previous& previous_;
+  Bad_faces bad_faces_;
+  Mesh_2::Face_badness current_badness_ = Mesh_2::NOT_BAD;
 };
 
 /// Delaunay refinement of the faces only, for loops whose samples are shared with a neighbouring
@@ -356,7 +509,9 @@ private:
 /// refuses every point in a constrained edge's diametral circle, which blocks all refinement of a
 /// domain whose boundary is sampled more coarsely than its inside needs, like a long cylinder's
 /// annulus with a tiny inner circle.) The domain must be marked before.
-template <typename CDT, typename Criteria>
+/// `Queue` is the faces level's base (the queue of bad faces): `Bad_face_queue_2`, or CGAL's
+/// `Mesh_2::Refine_faces_base`, which refines in the same order (a test compares them).
+template <typename CDT, typename Criteria, template <typename, typename, typename> class Queue = Bad_face_queue_2>
 class Fixed_boundary_mesher_2
 {
   // Local Delaunay conformity of constrained edges, also for a point about to be inserted. The
@@ -381,7 +536,7 @@ class Fixed_boundary_mesher_2
     }
   };
   typedef CGAL::Mesh_2::Refine_edges<CDT, Conforming, CGAL::Mesh_2::Do_not_refine_edges<CDT, Conforming> > Edges_level;
-  typedef CGAL::Mesh_2::Refine_faces<CDT, Criteria, Edges_level> Faces_level;
+  typedef CGAL::Mesh_2::Refine_faces<CDT, Criteria, Edges_level, Queue<CDT, Criteria, Edges_level> > Faces_level;
 
 public:
   Fixed_boundary_mesher_2(CDT& cdt, const Criteria& criteria)
@@ -622,23 +777,43 @@ struct Planar_mesh
   std::vector<std::array<int, 3> > triangles; // counterclockwise
 };
 
+/// The face base of the planar mesher's triangulations (and of any that `mark_domain()` marks):
+/// CGAL's for Delaunay meshing, with `Planar_face_info` as the face's info.
+template <typename Kernel>
+using Planar_face_base_2 = CGAL::Delaunay_mesh_face_base_2<
+  Kernel, CGAL::Constrained_Delaunay_triangulation_face_base_2<
+            Kernel, CGAL::Constrained_triangulation_face_base_2<Kernel, CGAL::Triangulation_face_base_with_info_2<Planar_face_info, Kernel> > > >;
+
+/// The constrained Delaunay triangulation of the planar mesher: a vertex's info is its number in
+/// the output (and a count in `separate_images_of_one_sample()`), a face's is `Planar_face_info`.
+template <typename Kernel>
+struct Planar_triangulation
+{
+  typedef CGAL::Delaunay_mesh_vertex_base_2<Kernel, CGAL::Triangulation_vertex_base_with_info_2<int, Kernel> > Vb;
+  typedef CGAL::Constrained_Delaunay_triangulation_2<Kernel, CGAL::Triangulation_data_structure_2<Vb, Planar_face_base_2<Kernel> >,
+                                                     CGAL::Exact_predicates_tag>
+    type;
+};
+
 // Marks the faces of `cdt` at odd nesting depth (counting constraints crossed from the
-// infinite face) as the domain: the outer loop's inside minus the holes.
+// infinite face) as the domain: the outer loop's inside minus the holes. The faces' info
+// (`Planar_face_info`, see `Planar_face_base_2`) holds their depth while it runs (-1: not reached yet), in place of a hash
+// map from face to depth that took as long as the walk itself.
 template <typename CDT>
 void mark_domain(CDT& cdt)
 {
   typedef typename CDT::Face_handle Face_handle;
-  std::unordered_map<Face_handle, int> level;
-  level.reserve(cdt.number_of_faces() + 1);
-  std::list<std::pair<Face_handle, int> > frontier{{cdt.infinite_face(), 0}};
-  while(!frontier.empty())
+  for(Face_handle f : cdt.all_face_handles())
+    f->info().depth = -1;
+  std::vector<std::pair<Face_handle, int> > frontier{{cdt.infinite_face(), 0}}; // in order, from `next` on
+  std::vector<Face_handle> stack;
+  for(std::size_t next = 0; next < frontier.size(); ++next)
   {
-    const std::pair<Face_handle, int> seed = frontier.front();
-    frontier.pop_front();
-    if(level.count(seed.first))
+    const std::pair<Face_handle, int> seed = frontier[next];
+    if(seed.first->info().depth >= 0)
       continue;
-    level[seed.first] = seed.second;
-    std::vector<Face_handle> stack{seed.first};
+    seed.first->info().depth = seed.second;
+    stack.assign(1, seed.first);
     while(!stack.empty())
     {
       const Face_handle f = stack.back();
@@ -647,13 +822,13 @@ void mark_domain(CDT& cdt)
       for(int i = 0; i < 3; ++i)
       {
         const Face_handle g = f->neighbor(i);
-        if(level.count(g))
+        if(g->info().depth >= 0)
           continue;
         if(cdt.is_constrained(std::make_pair(f, i)))
           frontier.emplace_back(g, seed.second + 1);
         else
         {
-          level[g] = seed.second;
+          g->info().depth = seed.second;
           stack.push_back(g);
         }
       }
@@ -663,7 +838,7 @@ void mark_domain(CDT& cdt)
 
 // See `mesh_planar_domain()`. Bounded: splitting an edge at a slit's tip moves the problem away
 // from the tip, and a few rounds clear it; the refinement is not run again (shapes near a slit's
-// tip may fall below the angle bound).
+// tip may fall below the angle bound). The vertices' info (an integer) is overwritten.
 template <typename CDT, typename Vertex_at>
 void separate_images_of_one_sample(CDT& cdt, const std::vector<std::vector<Boundary_sample> >& loops, const Vertex_at& vertex_at)
 {
@@ -682,10 +857,21 @@ void separate_images_of_one_sample(CDT& cdt, const std::vector<std::vector<Bound
     return;
   for(int round = 0; round < 8; ++round)
   {
+    // Only a vertex joined to two images can join two images of one sample: the vertices' info
+    // counts their neighbours among the images first, and the others are skipped.
+    for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+      v->info() = 0;
+    for(const auto& image : id_of)
+    {
+      auto w = cdt.incident_vertices(image.first), done = w;
+      do
+        ++w->info();
+      while(++w != done);
+    }
     std::vector<typename CDT::Point> midpoints;
     for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
     {
-      if(cdt.are_there_incident_constraints(v))
+      if(v->info() < 2 || cdt.are_there_incident_constraints(v))
         continue; // a sample: two samples are kept apart by `diagonals_to_split`
       std::set<std::size_t> seen;
       auto w = cdt.incident_vertices(v), done = w;
@@ -734,10 +920,7 @@ Planar_mesh mesh_planar_domain(const std::vector<std::vector<Boundary_sample> >&
                                const std::vector<Epick::Point_2>& fixed_points = {},
                                const std::vector<Planar_seed>& seeds = {})
 {
-  typedef CGAL::Delaunay_mesh_vertex_base_2<Kernel> Vb;
-  typedef CGAL::Delaunay_mesh_face_base_2<Kernel> Fb;
-  typedef CGAL::Triangulation_data_structure_2<Vb, Fb> Tds;
-  typedef CGAL::Constrained_Delaunay_triangulation_2<Kernel, Tds, CGAL::Exact_predicates_tag> CDT;
+  typedef typename Planar_triangulation<Kernel>::type CDT;
   typedef typename CDT::Vertex_handle Vertex_handle;
   typedef typename CDT::Face_handle Face_handle;
   typedef typename Kernel::Point_2 Point;
@@ -770,19 +953,22 @@ Planar_mesh mesh_planar_domain(const std::vector<std::vector<Boundary_sample> >&
     return !midpoints.empty();
   };
 
+  // One criteria object for every refinement: the field at the corners it remembers still holds
+  // after the smoothing, at the points the smoothing did not move.
+  const Criteria criteria(sine * sine, size);
   auto refine = [&](CDT& cdt) {
     mark_domain(cdt);
     if(split_diagonals(cdt))
       mark_domain(cdt);
     if(split_boundary)
     {
-      CGAL::Delaunay_mesher_2<CDT, Criteria> mesher(cdt, Criteria(sine * sine, size));
+      CGAL::Delaunay_mesher_2<CDT, Criteria> mesher(cdt, criteria);
       mesher.init(true);
       mesher.refine_mesh();
     }
     else
     {
-      Fixed_boundary_mesher_2<CDT, Criteria> mesher(cdt, Criteria(sine * sine, size));
+      Fixed_boundary_mesher_2<CDT, Criteria> mesher(cdt, criteria);
       mesher.refine_mesh();
     }
   };
@@ -850,14 +1036,17 @@ Planar_mesh mesh_planar_domain(const std::vector<std::vector<Boundary_sample> >&
       }
       // The mean of the neighbours in the surface's metric: the plane is scaled by the size field,
       // so each neighbour weighs 1 / size^2 at the edge's midpoint.
+      // The field's searches start where the refinement found the vertex: the vertices come in
+      // the order the refinement made them, worst face first, far from the last one.
       double x = 0., y = 0., n = 0.;
       const double vx = CGAL::to_double(v->point().x()), vy = CGAL::to_double(v->point().y());
+      Size_field_hint near = criteria.hint_at(Epick::Point_2(vx, vy));
       auto c = cdt.incident_vertices(v), done = c;
       do
         if(!cdt.is_infinite(c))
         {
           const double cx = CGAL::to_double(c->point().x()), cy = CGAL::to_double(c->point().y());
-          const double local = size(Epick::Point_2(0.5 * (vx + cx), 0.5 * (vy + cy)));
+          const double local = size_field_at(size, Epick::Point_2(0.5 * (vx + cx), 0.5 * (vy + cy)), near);
           const double w = 1. / (local * local);
           x += w * cx;
           y += w * cy;
@@ -884,37 +1073,55 @@ Planar_mesh mesh_planar_domain(const std::vector<std::vector<Boundary_sample> >&
     cdt.swap(smoothed);
   }
 
-  separate_images_of_one_sample(cdt, loops, vertex_at);
+  // The samples and the fixed points are found by their coordinates in one table of the vertices:
+  // a location in the triangulation walks from the same face each time, across hundreds of faces.
+  const auto to_epick = [](const Point& p) { return Epick::Point_2(CGAL::to_double(p.x()), CGAL::to_double(p.y())); };
+  Planar_point_map<Vertex_handle> vertex_of;
+  vertex_of.reserve(cdt.number_of_vertices());
+  for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+    vertex_of.try_emplace(to_epick(v->point()), v);
+  // (Two points of an exact kernel may round to one pair of doubles: then the triangulation's.)
+  const auto final_vertex_at = [&](const CDT& t, const Point& p) {
+    const Vertex_handle* v = vertex_of.find(to_epick(p));
+    return v != nullptr && (*v)->point() == p ? *v : vertex_at(t, p);
+  };
+  separate_images_of_one_sample(cdt, loops, final_vertex_at); // inserts points, moves none
   mark_domain(cdt);
 
   // Output: the boundary samples first, in loop order, then the other vertices.
   Planar_mesh result;
-  std::unordered_map<Vertex_handle, int> index;
-  index.reserve(cdt.number_of_vertices());
+  for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+    v->info() = -1;
+  const auto number = [&result](Vertex_handle v) {
+    if(v->info() >= 0)
+      return false;
+    v->info() = int(result.points.size());
+    return true;
+  };
   for(const auto& loop : loops)
     for(const Boundary_sample& s : loop)
     {
-      const Vertex_handle v = vertex_at(cdt, Point(s.uv.x(), s.uv.y()));
+      const Vertex_handle v = final_vertex_at(cdt, Point(s.uv.x(), s.uv.y()));
       if(v == Vertex_handle())
         throw Error(Error_code::INVALID_INPUT, "planar meshing lost a boundary sample (internal error)");
-      if(index.emplace(v, int(result.points.size())).second)
+      if(number(v))
         result.points.push_back(s.uv);
     }
   result.number_of_samples = result.points.size();
   for(const Epick::Point_2& p : fixed_points)
   {
-    const Vertex_handle v = vertex_at(cdt, Point(p.x(), p.y()));
-    if(v == Vertex_handle() || !index.emplace(v, int(result.points.size())).second)
+    const Vertex_handle v = final_vertex_at(cdt, Point(p.x(), p.y()));
+    if(v == Vertex_handle() || !number(v))
       throw Error(Error_code::INVALID_INPUT, "planar meshing lost a fixed point (internal error)");
     result.points.push_back(p);
   }
   result.number_of_fixed_points = result.points.size();
   for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
-    if(index.emplace(v, int(result.points.size())).second)
-      result.points.push_back(Epick::Point_2(CGAL::to_double(v->point().x()), CGAL::to_double(v->point().y())));
+    if(number(v))
+      result.points.push_back(to_epick(v->point()));
   for(Face_handle f : cdt.finite_face_handles())
     if(f->is_in_domain())
-      result.triangles.push_back({{index.at(f->vertex(0)), index.at(f->vertex(1)), index.at(f->vertex(2))}});
+      result.triangles.push_back({{f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()}});
   return result;
 }
 

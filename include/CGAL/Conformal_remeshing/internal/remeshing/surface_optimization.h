@@ -227,8 +227,11 @@ public:
   /// `number_of_fixed_points` points never move. The first points are images of the surface
   /// samples `sample_ids` when given: no flip then joins two images of one sample, the samples
   /// of a pair in `forbidden_diagonals` (smaller first), or a vertex to two images of one sample.
+  /// `hints[v]` (optional) is where the lift of `positions[v]` was found: the hint its next lift
+  /// starts from (without one, the first lift of each vertex searches the whole plane).
   bool initialize(std::size_t number_of_fixed_points, const std::vector<std::size_t>& sample_ids = {},
-                  const std::set<std::pair<std::size_t, std::size_t> >& forbidden_diagonals = {})
+                  const std::set<std::pair<std::size_t, std::size_t> >& forbidden_diagonals = {},
+                  const std::vector<std::size_t>& hints = {})
   {
     sample_ids_ = sample_ids;
     forbidden_diagonals_ = forbidden_diagonals;
@@ -236,6 +239,7 @@ public:
     fixed_.assign(nv, 0);
     moves_.assign(nv, 0);
     hints_.assign(nv, no_hint);
+    std::copy_n(hints.begin(), (std::min)(hints.size(), nv), hints_.begin());
     settled_.assign(nv, 0);
     valence_.assign(nv, 0);
     if(!link_triangles(triangles_, neighbor_, [&](int a, int b, bool interior) {
@@ -1230,13 +1234,14 @@ Surface_optimization_report optimize_on_surface(std::vector<Epick::Point_2>& poi
                                                 const Lift& lift, double angle_bound_degrees, double longest_edge, const Edge_split_bounds& split, int rounds,
                                                 const std::vector<std::size_t>& sample_ids = {},
                                                 const std::set<std::pair<std::size_t, std::size_t> >& forbidden_diagonals = {},
-                                                bool in_parallel = false, double shortest_edge = 0.)
+                                                bool in_parallel = false, double shortest_edge = 0.,
+                                                const std::vector<std::size_t>& hints = {})
 {
   Surface_optimization_report report;
   if(rounds <= 0 || triangles.empty())
     return report;
   Surface_mesh_optimizer<Lift> optimizer(points, positions, triangles, lift, angle_bound_degrees, longest_edge);
-  if(!optimizer.initialize(number_of_fixed_points, sample_ids, forbidden_diagonals))
+  if(!optimizer.initialize(number_of_fixed_points, sample_ids, forbidden_diagonals, hints))
     return report;
   optimizer.run_in_parallel(in_parallel);
   report.optimized = true;
