@@ -797,8 +797,8 @@ struct Planar_triangulation
 
 // Marks the faces of `cdt` at odd nesting depth (counting constraints crossed from the
 // infinite face) as the domain: the outer loop's inside minus the holes. The faces' info
-// (`Planar_face_info`, see `Planar_face_base_2`) holds their depth while it runs (-1: not reached yet), in place of a hash
-// map from face to depth that took as long as the walk itself.
+// (`Planar_face_info`, see `Planar_face_base_2`) holds their depth while it runs (-1: not reached
+// yet), in place of a hash map from face to depth that took as long as the walk itself.
 template <typename CDT>
 void mark_domain(CDT& cdt)
 {
