@@ -5,7 +5,7 @@
 // [0.7, 1.4] x target, Hausdorff distance both ways relative to the diagonal, self-intersection.
 // Prints a table and writes JSON (atomically, at the end); then, against output size, the
 // meshing stage's speed (issue #5 asks for 100k output vertices per second for meshing plus
-// pull-back). With --save-meshes DIR, also writes
+// pull-back), and where its time goes, phase by phase. With --save-meshes DIR, also writes
 // each model's two outputs as OFF files (and the input of the generated models) into DIR.
 //
 //   remeshing_benchmark OUT.json [--relative R] [--save-meshes DIR] [MESH ...]
@@ -31,6 +31,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cerrno>
 #include <chrono>
@@ -267,6 +268,7 @@ int main(int argc, char** argv)
     std::size_t vertices;
     double stage, planar, optimization, pull_back; // wall seconds, then thread seconds
     double peer_rate; // isotropic_remeshing's output vertices per wall second on the model (median run)
+    CR::Meshing_phase_seconds phases; // each the median over the runs
 
     // `count` per second of a duration (0 for none measured: no infinity in the JSON)
     static double per_second(std::size_t count, double seconds) { return seconds > 0. ? double(count) / seconds : 0.; }
@@ -274,6 +276,17 @@ int main(int argc, char** argv)
     double rate(double seconds) const { return per_second(vertices, seconds); }
   };
   std::vector<Speed> speeds;
+  // The phases of the planar meshing and of the optimization, in the third table's order.
+  typedef double CR::Meshing_phase_seconds::*Phase;
+  const std::array<std::pair<const char*, Phase>, 9> phases{{{"planar_setup", &CR::Meshing_phase_seconds::planar_setup},
+                                                             {"planar_refinement", &CR::Meshing_phase_seconds::planar_refinement},
+                                                             {"planar_smoothing", &CR::Meshing_phase_seconds::planar_smoothing},
+                                                             {"optimization_setup", &CR::Meshing_phase_seconds::optimization_setup},
+                                                             {"first_rounds", &CR::Meshing_phase_seconds::first_rounds},
+                                                             {"splits", &CR::Meshing_phase_seconds::splits},
+                                                             {"collapses", &CR::Meshing_phase_seconds::collapses},
+                                                             {"skewness_passes", &CR::Meshing_phase_seconds::skewness_passes},
+                                                             {"angle_passes", &CR::Meshing_phase_seconds::angle_passes}}};
   for(std::size_t k = 0; k < models.size(); ++k)
   {
     const Model& model = models[k];
@@ -284,6 +297,7 @@ int main(int argc, char** argv)
     CR::Remeshing_report report;
     double ours_seconds = 0.;
     std::vector<double> stage_seconds, planar_seconds, optimization_seconds, pull_back_seconds; // per run
+    std::vector<CR::Meshing_phase_seconds> phase_seconds;
     try
     {
       ours_seconds = bm::median_seconds([&] {
@@ -292,6 +306,7 @@ int main(int argc, char** argv)
         planar_seconds.push_back(report.seconds_planar_meshing);
         optimization_seconds.push_back(report.seconds_optimization);
         pull_back_seconds.push_back(report.seconds_pull_back);
+        phase_seconds.push_back(report.meshing_phases);
       });
     }
     catch(const CR::Error& e)
@@ -338,11 +353,22 @@ int main(int argc, char** argv)
     write_json(json, a);
     speeds.push_back(Speed{model.name, a.vertices, bm::median(stage_seconds), bm::median(planar_seconds),
                            bm::median(optimization_seconds), bm::median(pull_back_seconds),
-                           Speed::per_second(b.vertices, b.seconds)});
-    const Speed& speed = speeds.back();
+                           Speed::per_second(b.vertices, b.seconds), CR::Meshing_phase_seconds()});
+    Speed& speed = speeds.back();
+    for(const auto& phase : phases)
+    {
+      std::vector<double> runs;
+      for(const CR::Meshing_phase_seconds& run : phase_seconds)
+        runs.push_back(run.*phase.second);
+      speed.phases.*phase.second = bm::median(runs);
+    }
     json << ", \"output_vertices_per_second\": {\"meshing_stage\": " << speed.rate(speed.stage)
          << ", \"planar_meshing_and_pull_back\": " << speed.rate(speed.planar + speed.pull_back)
          << ", \"isotropic_remeshing\": " << speed.peer_rate << "}";
+    json << ", \"meshing_phase_thread_seconds\": {";
+    for(std::size_t i = 0; i < phases.size(); ++i)
+      json << (i ? ", " : "") << json_string(phases[i].first) << ": " << speed.phases.*phases[i].second;
+    json << "}";
     json << ", \"isotropic\": ";
     write_json(json, b);
     json << "}";
@@ -364,6 +390,22 @@ int main(int argc, char** argv)
                "meshing, the optimization on the surface and the pull-back, summed over patches; k/s p+pull: output "
                "vertices per thread second of planar meshing and pull-back alone; iso k/s: isotropic_remeshing's thousands of "
                "output vertices per wall second on the model, to compare runs as the machine's pace drifts)\n";
+  std::cout << "\n" << std::left << std::setw(22) << "model" << std::right;
+  for(const char* column : {"p:setup", "p:refine", "p:smooth", "o:setup", "o:rounds", "o:splits", "o:collap", "o:skew", "o:angle"})
+    std::cout << std::setw(9) << column;
+  std::cout << "\n";
+  for(const Speed& speed : speeds)
+  {
+    std::cout << std::left << std::setw(22) << speed.model << std::right << std::setprecision(3);
+    for(const auto& phase : phases)
+      std::cout << std::setw(9) << speed.phases.*phase.second;
+    std::cout << "\n";
+  }
+  std::cout << "(where the planar meshing's thread seconds (p:) and the optimization's seconds (o:, as in optim) go, "
+               "medians of the 3 runs, summed over patches: p: the set-up (point locator, kept input vertices, seeds) and output, CGAL's "
+               "refinement, the smoothing in the plane with its refinement; o: the lifts and adjacency, the first rounds "
+               "of flips and smoothing, the split passes with their rounds, the collapses with their round, the skewness "
+               "passes, the angle passes)\n";
   if(!mesh_directory.empty())
     std::cout << "meshes: " << mesh_directory << "\n";
   try

@@ -67,6 +67,44 @@ namespace CGAL {
 namespace Conformal_remeshing {
 
 /// \ingroup PkgConformalRemeshingRef
+/// Where the meshing stage's time goes, in seconds summed over the patches (see
+/// `Remeshing_report::meshing_phases`). The first three add up to
+/// `Remeshing_report::seconds_planar_meshing`, the other six to
+/// `Remeshing_report::seconds_optimization` (wall seconds of each patch's optimization, whose
+/// vertex moves may run in parallel).
+struct Meshing_phase_seconds
+{
+  /// the planar meshing's set-up and output: the point locator in the flattening, the input
+  /// vertices kept, the seeds, the triangulation of the boundary samples and the numbering of
+  /// the output
+  double planar_setup = 0.;
+  double planar_refinement = 0.; ///< CGAL's Delaunay refinement of the planar domain
+  /// the smoothing in the plane, with the triangulation and refinement of the smoothed points
+  double planar_smoothing = 0.;
+  /// the optimization's set-up: the lifts of the planar points to the surface and the adjacency
+  double optimization_setup = 0.;
+  double first_rounds = 0.;    ///< its first rounds of flips and smoothing passes
+  double splits = 0.;          ///< its split passes and the rounds after them
+  double collapses = 0.;       ///< its collapse pass and the round after it
+  double skewness_passes = 0.; ///< its skewness passes
+  double angle_passes = 0.;    ///< its angle passes and the removal of the collapsed vertices
+
+  Meshing_phase_seconds& operator+=(const Meshing_phase_seconds& other)
+  {
+    planar_setup += other.planar_setup;
+    planar_refinement += other.planar_refinement;
+    planar_smoothing += other.planar_smoothing;
+    optimization_setup += other.optimization_setup;
+    first_rounds += other.first_rounds;
+    splits += other.splits;
+    collapses += other.collapses;
+    skewness_passes += other.skewness_passes;
+    angle_passes += other.angle_passes;
+    return *this;
+  }
+};
+
+/// \ingroup PkgConformalRemeshingRef
 /// What `remesh_conformal()` did.
 struct Remeshing_report
 {
@@ -123,6 +161,8 @@ struct Remeshing_report
   /// seconds summed over the patches (thread time; the optimization's vertex moves within a
   /// patch run in parallel too, so `seconds_optimization` sums the patches' wall time)
   double seconds_ricci_flow = 0., seconds_planar_meshing = 0., seconds_optimization = 0., seconds_pull_back = 0.;
+  /// the planar meshing's and the optimization's seconds by phase
+  Meshing_phase_seconds meshing_phases;
 };
 
 /// \ingroup PkgConformalRemeshingRef
@@ -304,6 +344,7 @@ struct Remeshed_patch
   std::size_t clamped_vertices = 0;
   Surface_optimization_report optimization;
   double seconds_planar_meshing = 0., seconds_optimization = 0., seconds_pull_back = 0.;
+  Meshing_phase_seconds phases; // of the planar meshing and the optimization
 };
 
 // The glue's preconditions, for one patch: every chord between consecutive samples of a loop is
@@ -523,6 +564,9 @@ inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, c
   if(planar.number_of_samples != result.boundary_ids.size())
     throw Error(Error_code::NOT_AN_EMBEDDING, "remesh_conformal: the boundary samples of a patch overlap in the plane");
   result.seconds_planar_meshing = std::chrono::duration<double>(Clock::now() - start).count();
+  result.phases.planar_refinement = planar.seconds_refinement;
+  result.phases.planar_smoothing = planar.seconds_smoothing;
+  result.phases.planar_setup = result.seconds_planar_meshing - planar.seconds_refinement - planar.seconds_smoothing;
   result.chords_not_glued = check_glue(loops, planar, result.boundary_ids, samples).chords_not_glued;
   if(!result.chords_not_glued.empty())
     return result;
@@ -568,6 +612,17 @@ inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, c
                           sizing.is_uniform() ? collapse_edge_factor * sizing.target() : 0., hints);
   }
   result.seconds_optimization = std::chrono::duration<double>(Clock::now() - start).count();
+  {
+    const Surface_optimization_report& o = result.optimization;
+    Meshing_phase_seconds& phases = result.phases;
+    phases.first_rounds = o.seconds_first_rounds;
+    phases.splits = o.seconds_splits;
+    phases.collapses = o.seconds_collapses;
+    phases.skewness_passes = o.seconds_skewness_passes;
+    phases.angle_passes = o.seconds_angle_passes;
+    phases.optimization_setup = result.seconds_optimization - (phases.first_rounds + phases.splits + phases.collapses
+                                                               + phases.skewness_passes + phases.angle_passes);
+  }
   // The optimizer keeps every chord (it never flips a boundary edge) and makes none of the
   // diagonals to split, but it may have made or removed others.
   result.sample_diagonals = check_glue(loops, planar, result.boundary_ids, samples).sample_diagonals;
@@ -1011,6 +1066,7 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
       report.seconds_planar_meshing += r.seconds_planar_meshing;
       report.seconds_optimization += r.seconds_optimization;
       report.seconds_pull_back += r.seconds_pull_back;
+      report.meshing_phases += r.phases;
       report.optimization_flips += r.optimization.flips;
       report.optimization_splits += r.optimization.splits;
       report.optimization_chord_splits += r.optimization.chord_splits;

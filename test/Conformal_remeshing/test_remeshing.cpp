@@ -118,6 +118,39 @@ TEST(RemeshConformal, TargetEdgeLengthControlsTheSize)
   (void)b;
 }
 
+TEST(RemeshConformal, ReportsWhereTheMeshingStageTimeGoes)
+{
+  // The set-up phases are what the timed phases leave of their stage's time: one timed outside
+  // its stage, or twice, would make them negative.
+  Mesh mesh;
+  bm::make_spherical_cap(mesh, 90., 8, 24);
+  const auto planar_sum = [](const CR::Meshing_phase_seconds& p) { return p.planar_setup + p.planar_refinement + p.planar_smoothing; };
+  const auto optimization_sum = [](const CR::Meshing_phase_seconds& p) {
+    return p.optimization_setup + p.first_rounds + p.splits + p.collapses + p.skewness_passes + p.angle_passes;
+  };
+  Mesh output;
+  const CR::Remeshing_report report = CR::remesh_conformal(mesh, output, CR::parameters::relative_target_edge_length(0.02));
+  const CR::Meshing_phase_seconds& phases = report.meshing_phases;
+  for(double seconds : {phases.planar_setup, phases.optimization_setup, phases.collapses, phases.angle_passes})
+    EXPECT_GE(seconds, 0.);
+  for(double seconds : {phases.planar_refinement, phases.planar_smoothing, phases.first_rounds, phases.splits, phases.skewness_passes})
+    EXPECT_GT(seconds, 0.);
+  EXPECT_NEAR(planar_sum(phases), report.seconds_planar_meshing, 1e-9);
+  EXPECT_NEAR(optimization_sum(phases), report.seconds_optimization, 1e-9);
+  EXPECT_GT(phases.planar_refinement + phases.planar_smoothing, 0.5 * report.seconds_planar_meshing);
+
+  // Without the smoothing and the optimization, their phases take no time (the smoothing's, two
+  // clock readings apart; a preemption there could add a little).
+  const CR::Remeshing_report refinement_only = CR::remesh_conformal(
+    mesh, output,
+    CR::parameters::smoothing_iterations(0, CR::parameters::optimization_rounds(0, CR::parameters::relative_target_edge_length(0.02))));
+  const CR::Meshing_phase_seconds& refined = refinement_only.meshing_phases;
+  EXPECT_GT(refined.planar_refinement, 0.);
+  EXPECT_LT(refined.planar_smoothing, 0.5 * refined.planar_refinement);
+  EXPECT_EQ(refined.first_rounds + refined.splits + refined.collapses + refined.skewness_passes + refined.angle_passes, 0.);
+  EXPECT_GE(refined.optimization_setup, 0.);
+}
+
 // Mean length of the output edges whose midpoint satisfies `where`.
 template <typename Where>
 double mean_edge_length(const Mesh& m, const Where& where)

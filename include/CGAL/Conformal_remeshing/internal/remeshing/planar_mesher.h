@@ -21,6 +21,7 @@
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -775,6 +776,8 @@ struct Planar_mesh
   std::size_t number_of_samples = 0;
   std::size_t number_of_fixed_points = 0; ///< the samples and the fixed interior points
   std::vector<std::array<int, 3> > triangles; // counterclockwise
+  /// wall seconds of the first refinement, and of the smoothing with the refinements after it
+  double seconds_refinement = 0., seconds_smoothing = 0.;
 };
 
 /// The face base of the planar mesher's triangulations (and of any that `mark_domain()` marks):
@@ -1016,7 +1019,10 @@ Planar_mesh mesh_planar_domain(const std::vector<std::vector<Boundary_sample> >&
         fixed.insert(cdt.insert(p, f)->point());
     }
   }
+  typedef std::chrono::steady_clock Clock;
+  const Clock::time_point refinement_start = Clock::now();
   refine(cdt);
+  const Clock::time_point smoothing_start = Clock::now();
 
   for(int iteration = 0; iteration < smoothing_iterations; ++iteration)
   {
@@ -1072,6 +1078,7 @@ Planar_mesh mesh_planar_domain(const std::vector<std::vector<Boundary_sample> >&
     refine(smoothed);
     cdt.swap(smoothed);
   }
+  const Clock::time_point smoothing_end = Clock::now();
 
   // The samples and the fixed points are found by their coordinates in one table of the vertices:
   // a location in the triangulation walks from the same face each time, across hundreds of faces.
@@ -1090,6 +1097,8 @@ Planar_mesh mesh_planar_domain(const std::vector<std::vector<Boundary_sample> >&
 
   // Output: the boundary samples first, in loop order, then the other vertices.
   Planar_mesh result;
+  result.seconds_refinement = std::chrono::duration<double>(smoothing_start - refinement_start).count();
+  result.seconds_smoothing = std::chrono::duration<double>(smoothing_end - smoothing_start).count();
   for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
     v->info() = -1;
   const auto number = [&result](Vertex_handle v) {

@@ -22,6 +22,7 @@
 #include <algorithm>
 #include <set>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <limits>
@@ -42,6 +43,12 @@ struct Surface_optimization_report
   std::size_t splits = 0;        ///< edges split (see `Surface_mesh_optimizer::split_pass()`)
   std::size_t chord_splits = 0;  ///< of those, the edges split because their chord stood off the surface
   std::size_t collapses = 0;     ///< short edges collapsed (see `Surface_mesh_optimizer::collapse_pass()`)
+  /// wall seconds of the phases of `optimize_on_surface()`: the first rounds of flips and
+  /// smoothing, the split passes with the rounds after them, the collapse pass with its round,
+  /// the skewness passes, and the angle passes with the removal of the collapsed vertices (the
+  /// set-up is in none)
+  double seconds_first_rounds = 0., seconds_splits = 0., seconds_collapses = 0., seconds_skewness_passes = 0.,
+         seconds_angle_passes = 0.;
 };
 
 /// Edges whose chord stands off the surface: longer than `shortest`, with the chord's midpoint
@@ -1245,6 +1252,13 @@ Surface_optimization_report optimize_on_surface(std::vector<Epick::Point_2>& poi
     return report;
   optimizer.run_in_parallel(in_parallel);
   report.optimized = true;
+  // Adds the seconds since the last call to `phase`.
+  std::chrono::steady_clock::time_point phase_start = std::chrono::steady_clock::now();
+  const auto end_phase = [&phase_start](double& phase) {
+    const std::chrono::steady_clock::time_point now = std::chrono::steady_clock::now();
+    phase += std::chrono::duration<double>(now - phase_start).count();
+    phase_start = now;
+  };
   // Each round: valence flips, then flips that improve shapes without hurting valences, then two
   // smoothing passes; the skewness passes at the end polish what smoothing leaves. (Measured on
   // CGAL's CAD-like models: rounds beyond 5 and a lower skewness threshold gain < 0.003.)
@@ -1256,6 +1270,7 @@ Surface_optimization_report optimize_on_surface(std::vector<Epick::Point_2>& poi
   };
   for(int round = 0; round < rounds; ++round)
     flip_and_smooth();
+  end_phase(report.seconds_first_rounds);
   // From the first split on, the rounds make no chord across a bend (the split passes after them
   // catch the rest); keeping the long chords on tight curves too held back the smoothing of the
   // elephant's scanned skin (mean skewness 0.119 -> 0.124). The skewness passes, with no split
@@ -1282,6 +1297,7 @@ Surface_optimization_report optimize_on_surface(std::vector<Epick::Point_2>& poi
       flip_and_smooth();
     }
   }
+  end_phase(report.seconds_splits);
   // The short edges the splits and the refinement leave are collapsed (keeping both chord bounds,
   // as nothing splits after this), and one more round evens out what that changed.
   if(shortest_edge > 0.)
@@ -1291,15 +1307,18 @@ Surface_optimization_report optimize_on_surface(std::vector<Epick::Point_2>& poi
     optimizer.keep_chords(bends);
     flip_and_smooth();
   }
+  end_phase(report.seconds_collapses);
   optimizer.keep_chords(split);
   for(int pass = 0; pass < 3; ++pass)
     report.moves += optimizer.skewness_pass(0.12);
+  end_phase(report.seconds_skewness_passes);
   // Then the triangles below 30 degrees (the share that issue #7 counts against the peer), or
   // below the bound where that is higher.
   optimizer.keep_chords(bends);
   for(int pass = 0; pass < 3; ++pass)
     report.angle_changes += optimizer.angle_pass((std::max)(30., angle_bound_degrees));
   optimizer.remove_collapsed_vertices();
+  end_phase(report.seconds_angle_passes);
   return report;
 }
 
