@@ -120,8 +120,9 @@ TEST(RemeshConformal, TargetEdgeLengthControlsTheSize)
 
 TEST(RemeshConformal, ReportsWhereTheMeshingStageTimeGoes)
 {
-  // The set-up phases are what the timed phases leave of their stage's time: one timed outside
-  // its stage, or twice, would make them negative.
+  // The set-up phases are what the timed phases leave of their stage's time: a phase timed
+  // outside its stage could make them negative. One timed over another shows below, where the
+  // smoothing and the optimization do not run.
   Mesh mesh;
   bm::make_spherical_cap(mesh, 90., 8, 24);
   const auto planar_sum = [](const CR::Meshing_phase_seconds& p) { return p.planar_setup + p.planar_refinement + p.planar_smoothing; };

@@ -1252,7 +1252,7 @@ Surface_optimization_report optimize_on_surface(std::vector<Epick::Point_2>& poi
     return report;
   optimizer.run_in_parallel(in_parallel);
   report.optimized = true;
-  // Adds the seconds since the last call to `phase`.
+  // Adds to `phase` the seconds since the previous phase ended.
   std::chrono::steady_clock::time_point phase_start = std::chrono::steady_clock::now();
   const auto end_phase = [&phase_start](double& phase) {
     const std::chrono::steady_clock::time_point now = std::chrono::steady_clock::now();
