@@ -31,7 +31,6 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
-#include <array>
 #include <cctype>
 #include <cerrno>
 #include <chrono>
@@ -278,15 +277,8 @@ int main(int argc, char** argv)
   std::vector<Speed> speeds;
   // The phases of the planar meshing and of the optimization, in the third table's order.
   typedef double CR::Meshing_phase_seconds::*Phase;
-  const std::array<std::pair<const char*, Phase>, 9> phases{{{"planar_setup", &CR::Meshing_phase_seconds::planar_setup},
-                                                             {"planar_refinement", &CR::Meshing_phase_seconds::planar_refinement},
-                                                             {"planar_smoothing", &CR::Meshing_phase_seconds::planar_smoothing},
-                                                             {"optimization_setup", &CR::Meshing_phase_seconds::optimization_setup},
-                                                             {"first_rounds", &CR::Meshing_phase_seconds::first_rounds},
-                                                             {"splits", &CR::Meshing_phase_seconds::splits},
-                                                             {"collapses", &CR::Meshing_phase_seconds::collapses},
-                                                             {"skewness_passes", &CR::Meshing_phase_seconds::skewness_passes},
-                                                             {"angle_passes", &CR::Meshing_phase_seconds::angle_passes}}};
+  std::vector<std::pair<const char*, Phase> > phases;
+  CR::Meshing_phase_seconds::for_each_phase([&phases](const char* name, Phase phase) { phases.emplace_back(name, phase); });
   for(std::size_t k = 0; k < models.size(); ++k)
   {
     const Model& model = models[k];

@@ -323,13 +323,10 @@ int main(int argc, char** argv)
           .field("planar_meshing_thread_seconds", report.seconds_planar_meshing)
           .field("optimization_thread_seconds", report.seconds_optimization)
           .field("pull_back_thread_seconds", report.seconds_pull_back);
-      const CR::Meshing_phase_seconds& phases = report.meshing_phases;
-      json.key("meshing_phase_thread_seconds").begin_object().field("planar_setup", phases.planar_setup)
-          .field("planar_refinement", phases.planar_refinement).field("planar_smoothing", phases.planar_smoothing)
-          .field("optimization_setup", phases.optimization_setup).field("first_rounds", phases.first_rounds)
-          .field("splits", phases.splits).field("collapses", phases.collapses)
-          .field("skewness_passes", phases.skewness_passes).field("angle_passes", phases.angle_passes).end_object();
-      json.end_object();
+      json.key("meshing_phase_thread_seconds").begin_object();
+      CR::Meshing_phase_seconds::for_each_phase(
+        [&](const char* name, double CR::Meshing_phase_seconds::*phase) { json.field(name, report.meshing_phases.*phase); });
+      json.end_object().end_object();
       json.key("segmentation").begin_object().field("patches", report.number_of_patches)
           .field("plane_cuts", report.plane_cuts).field("patch_bisections", report.patch_bisections)
           .field("feature_edges", report.feature_edges).field("dangling_feature_edges", report.dangling_feature_edges)

@@ -89,17 +89,26 @@ struct Meshing_phase_seconds
   double skewness_passes = 0.; ///< its skewness passes
   double angle_passes = 0.;    ///< its angle passes and the removal of the collapsed vertices
 
+  /// Calls `f(name, phase)` for each phase in the order above: `name` is the member's name (as in
+  /// the tools' JSON reports), `phase` a pointer to the member.
+  template <typename F>
+  static void for_each_phase(const F& f)
+  {
+    typedef Meshing_phase_seconds P;
+    f("planar_setup", &P::planar_setup);
+    f("planar_refinement", &P::planar_refinement);
+    f("planar_smoothing", &P::planar_smoothing);
+    f("optimization_setup", &P::optimization_setup);
+    f("first_rounds", &P::first_rounds);
+    f("splits", &P::splits);
+    f("collapses", &P::collapses);
+    f("skewness_passes", &P::skewness_passes);
+    f("angle_passes", &P::angle_passes);
+  }
+
   Meshing_phase_seconds& operator+=(const Meshing_phase_seconds& other)
   {
-    planar_setup += other.planar_setup;
-    planar_refinement += other.planar_refinement;
-    planar_smoothing += other.planar_smoothing;
-    optimization_setup += other.optimization_setup;
-    first_rounds += other.first_rounds;
-    splits += other.splits;
-    collapses += other.collapses;
-    skewness_passes += other.skewness_passes;
-    angle_passes += other.angle_passes;
+    for_each_phase([&](const char*, double Meshing_phase_seconds::*phase) { this->*phase += other.*phase; });
     return *this;
   }
 };
