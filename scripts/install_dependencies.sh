@@ -5,14 +5,19 @@
 #   scripts/install_dependencies.sh          to build the package and its tools
 #   scripts/install_dependencies.sh --tests  also what the test suite needs: GoogleTest, doxygen
 #                                            and CGAL's public test meshes (see fetch_cgal_data.sh)
+#   scripts/install_dependencies.sh --robustness
+#                                            also what the sanitizer tests and the fuzzers need:
+#                                            Ninja, clang and its fuzzer and sanitizer runtimes
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 
 with_tests=0
+with_robustness=0
 for arg in "$@"; do
   case "$arg" in
     --tests) with_tests=1 ;;
-    -h|--help) sed -n '2,9p' "${BASH_SOURCE[0]}"; exit 0 ;;
+    --robustness) with_robustness=1 ;;
+    -h|--help) sed -n '2,10p' "${BASH_SOURCE[0]}"; exit 0 ;;
     *) echo "install_dependencies.sh: unknown argument '$arg'" >&2; exit 2 ;;
   esac
 done
@@ -20,6 +25,9 @@ done
 packages=(cmake make g++ libcgal-dev libeigen3-dev libboost-dev libgmp-dev libmpfr-dev libtbb-dev)
 if [ "$with_tests" -eq 1 ]; then
   packages+=(libgtest-dev doxygen)
+fi
+if [ "$with_robustness" -eq 1 ]; then
+  packages+=(ninja-build clang libclang-rt-14-dev)
 fi
 
 as_root() {

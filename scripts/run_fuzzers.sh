@@ -15,26 +15,7 @@ case "$seconds" in
 esac
 
 # clang and its runtime libraries (libFuzzer, sanitizers), on top of the build dependencies.
-bash "$root/scripts/install_dependencies.sh"
-as_root() {
-  if [ "$(id -u)" -eq 0 ]; then
-    "$@"
-  elif command -v sudo >/dev/null 2>&1; then
-    sudo "$@"
-  else
-    echo "run_fuzzers.sh: installing needs root or sudo: $*" >&2
-    exit 1
-  fi
-}
-missing=()
-for p in clang libclang-rt-14-dev; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "ok installed" || missing+=("$p")
-done
-if [ ${#missing[@]} -gt 0 ]; then
-  echo "Installing Debian packages: ${missing[*]}"
-  as_root apt-get update -qq
-  as_root env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}"
-fi
+bash "$root/scripts/install_dependencies.sh" --robustness
 
 build="$root/build/fuzz"
 mkdir -p "$build"

@@ -14,15 +14,9 @@ case "${1:-}" in
   *) echo "run_sanitizer_tests.sh: unknown argument '$1'" >&2; exit 2 ;;
 esac
 
-bash scripts/install_dependencies.sh --tests
 # Ninja builds the three targets in parallel in one invocation (CMake's Makefiles build the
 # goals of one `make` call one after the other).
-if ! command -v ninja >/dev/null 2>&1; then
-  echo "Installing Debian packages: ninja-build"
-  if [ "$(id -u)" -eq 0 ]; then as_root=(); else as_root=(sudo); fi
-  "${as_root[@]}" apt-get update -qq
-  "${as_root[@]}" env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends ninja-build
-fi
+bash scripts/install_dependencies.sh --tests --robustness
 build="$root/build/sanitizers"
 if [ -f "$build/CMakeCache.txt" ] && ! grep -q "^CMAKE_GENERATOR:INTERNAL=Ninja$" "$build/CMakeCache.txt"; then
   rm -rf "$build" # made by another generator
