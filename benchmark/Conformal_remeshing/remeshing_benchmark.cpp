@@ -275,10 +275,8 @@ int main(int argc, char** argv)
     double rate(double seconds) const { return per_second(vertices, seconds); }
   };
   std::vector<Speed> speeds;
-  // The phases of the planar meshing and of the optimization, in the third table's order.
+  // The phases of the planar meshing and of the optimization, visited in the third table's order.
   typedef double CR::Meshing_phase_seconds::*Phase;
-  std::vector<std::pair<const char*, Phase> > phases;
-  CR::Meshing_phase_seconds::for_each_phase([&phases](const char* name, Phase phase) { phases.emplace_back(name, phase); });
   for(std::size_t k = 0; k < models.size(); ++k)
   {
     const Model& model = models[k];
@@ -347,19 +345,21 @@ int main(int argc, char** argv)
                            bm::median(optimization_seconds), bm::median(pull_back_seconds),
                            Speed::per_second(b.vertices, b.seconds), CR::Meshing_phase_seconds()});
     Speed& speed = speeds.back();
-    for(const auto& phase : phases)
-    {
+    CR::Meshing_phase_seconds::for_each_phase([&](const char*, Phase phase) {
       std::vector<double> runs;
       for(const CR::Meshing_phase_seconds& run : phase_seconds)
-        runs.push_back(run.*phase.second);
-      speed.phases.*phase.second = bm::median(runs);
-    }
+        runs.push_back(run.*phase);
+      speed.phases.*phase = bm::median(runs);
+    });
     json << ", \"output_vertices_per_second\": {\"meshing_stage\": " << speed.rate(speed.stage)
          << ", \"planar_meshing_and_pull_back\": " << speed.rate(speed.planar + speed.pull_back)
          << ", \"isotropic_remeshing\": " << speed.peer_rate << "}";
     json << ", \"meshing_phase_thread_seconds\": {";
-    for(std::size_t i = 0; i < phases.size(); ++i)
-      json << (i ? ", " : "") << json_string(phases[i].first) << ": " << speed.phases.*phases[i].second;
+    const char* separator = "";
+    CR::Meshing_phase_seconds::for_each_phase([&](const char* name, Phase phase) {
+      json << separator << json_string(name) << ": " << speed.phases.*phase;
+      separator = ", ";
+    });
     json << "}";
     json << ", \"isotropic\": ";
     write_json(json, b);
@@ -389,8 +389,7 @@ int main(int argc, char** argv)
   for(const Speed& speed : speeds)
   {
     std::cout << std::left << std::setw(22) << speed.model << std::right << std::setprecision(3);
-    for(const auto& phase : phases)
-      std::cout << std::setw(9) << speed.phases.*phase.second;
+    CR::Meshing_phase_seconds::for_each_phase([&](const char*, Phase phase) { std::cout << std::setw(9) << speed.phases.*phase; });
     std::cout << "\n";
   }
   std::cout << "(where the planar meshing's thread seconds (p:) and the optimization's seconds (o:, as in optim) go, "
