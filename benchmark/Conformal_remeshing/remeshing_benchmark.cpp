@@ -6,9 +6,10 @@
 // Prints a table and writes JSON (atomically, at the end); then, against output size, the
 // meshing stage's speed (issue #5 asks for 100k output vertices per second for meshing plus
 // pull-back), and where its time goes, phase by phase. With --save-meshes DIR, also writes
-// each model's two outputs as OFF files (and the input of the generated models) into DIR.
+// each model's two outputs as OFF files (and the input of the generated models) into DIR. With
+// --lloyd N, remesh_conformal() runs with lloyd_iterations(N) (CGAL's Lloyd smoothing in the plane).
 //
-//   remeshing_benchmark OUT.json [--relative R] [--save-meshes DIR] [MESH ...]
+//   remeshing_benchmark OUT.json [--relative R] [--lloyd N] [--save-meshes DIR] [MESH ...]
 //
 // Exit code: 0, 1 when a model is refused, 2 for bad arguments or input, or an output that cannot
 // be written.
@@ -34,6 +35,7 @@
 #include <cctype>
 #include <cerrno>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -99,8 +101,9 @@ void write_json(std::ostream& out, const Measure& m)
 
 std::string usage()
 {
-  return "usage: remeshing_benchmark OUT.json [--relative R] [--save-meshes DIR] [MESH ...]\n"
+  return "usage: remeshing_benchmark OUT.json [--relative R] [--lloyd N] [--save-meshes DIR] [MESH ...]\n"
          "  --relative R        target edge length over the bounding-box diagonal, 0 < R < 1 (default 0.01)\n"
+         "  --lloyd N           remesh_conformal() with N Lloyd iterations in the plane, 0 to 1000 (default 0)\n"
          "  --save-meshes DIR   write DIR/<model>_conformal.off and DIR/<model>_isotropic.off for each model,\n"
          "                      and DIR/<model>_input.off for the generated ones; DIR is created if missing";
 }
@@ -161,6 +164,7 @@ int main(int argc, char** argv)
   }
   const std::string out_path = argv[1];
   double relative = 0.01;
+  int lloyd = 0;
   std::string mesh_directory; // empty: no --save-meshes
   std::vector<Model> models;
   try
@@ -179,6 +183,16 @@ int main(int argc, char** argv)
         relative = bm::parse_double(arg, argv[++i]);
         if(!(relative > 0. && relative < 1.))
           throw std::invalid_argument("--relative: must be greater than 0 and less than 1: '" + std::string(argv[i]) + "'");
+        continue;
+      }
+      if(arg == "--lloyd")
+      {
+        if(i + 1 >= argc)
+          throw std::invalid_argument("--lloyd: missing value");
+        const double n = bm::parse_double(arg, argv[++i]);
+        if(!(n >= 0. && n <= 1000. && n == std::floor(n)))
+          throw std::invalid_argument("--lloyd: must be a whole number from 0 to 1000: '" + std::string(argv[i]) + "'");
+        lloyd = int(n);
         continue;
       }
       if(arg == "--save-meshes")
@@ -291,7 +305,8 @@ int main(int argc, char** argv)
     try
     {
       ours_seconds = bm::median_seconds([&] {
-        report = CR::remesh_conformal(input, ours, CR::parameters::relative_target_edge_length(relative));
+        report = CR::remesh_conformal(input, ours,
+                                      CR::parameters::lloyd_iterations(lloyd, CR::parameters::relative_target_edge_length(relative)));
         stage_seconds.push_back(report.seconds_meshing_stage);
         planar_seconds.push_back(report.seconds_planar_meshing);
         optimization_seconds.push_back(report.seconds_optimization);
@@ -334,6 +349,7 @@ int main(int argc, char** argv)
               << std::setw(8) << "" << std::setw(8) << a.skewness / b.skewness << std::setw(8) << "" << std::setw(10)
               << a.hausdorff_to / b.hausdorff_to << std::setw(10) << a.hausdorff_from / b.hausdorff_from << "\n";
     json << (k ? ",\n" : "") << "  {\"model\": " << json_string(model.name) << ", \"target_edge_length\": " << h
+         << ", \"lloyd_iterations\": " << lloyd
          << ", \"patches\": " << report.number_of_patches << ", \"stage_seconds\": {\"segmentation\": "
          << report.seconds_segmentation << ", \"flattening\": " << report.seconds_flattening
          << ", \"meshing_and_pull_back\": " << report.seconds_meshing_stage << ", \"gluing\": " << report.seconds_gluing

@@ -3,7 +3,7 @@
 //   remesh_conformal IN OUT [--target-edge-length L | --relative-edge-length R] [--min-angle DEG]
 //                    [--features-angle DEG] [--patches FILE] [--cut-plane a,b,c,d]...
 //                    [--save-patches DIR] [--sequential] [--report FILE.json] [--plots DIR] [--quiet]
-//                    [--time-limit SECONDS] [--optimization-rounds N] [--chord-error E]
+//                    [--time-limit SECONDS] [--optimization-rounds N] [--lloyd-iterations N] [--chord-error E]
 //
 // Progress goes to standard error; OUT is written completely or not at all. Exit codes: 0
 // success, 1 the input cannot be remeshed (defects, unsupported topology, failed flattening),
@@ -45,7 +45,7 @@ const char* usage =
   "usage: remesh_conformal IN OUT [--target-edge-length L | --relative-edge-length R] [--min-angle DEG]\n"
   "                        [--features-angle DEG] [--patches FILE] [--cut-plane a,b,c,d]...\n"
   "                        [--save-patches DIR] [--sequential] [--report FILE.json] [--plots DIR] [--quiet]\n"
-  "                        [--time-limit SECONDS] [--optimization-rounds N] [--chord-error E]\n"
+  "                        [--time-limit SECONDS] [--optimization-rounds N] [--lloyd-iterations N] [--chord-error E]\n"
   "  IN, OUT                 mesh files (.off .obj .ply .stl); OUT is written atomically\n"
   "  --target-edge-length L  target edge length in the input's units\n"
   "  --relative-edge-length R  target edge length as a fraction of the bounding-box diagonal (default 0.01)\n"
@@ -61,6 +61,7 @@ const char* usage =
   "  --quiet                 no progress messages\n"
   "  --time-limit SECONDS    give up (exit code 3, no output written) if reading and remeshing take longer\n"
   "  --optimization-rounds N rounds of flips and smoothing judged on the surface after the refinement (default 5, 0: none)\n"
+  "  --lloyd-iterations N    at most N iterations of CGAL's Lloyd smoothing in the plane before them (default 0: none)\n"
   "  --chord-error E         shorter edges where the surface bends, so that chords deviate from it by at most E\n"
   "                          (input units; down to 1/16 of the target length; default 0: uniform)\n"
   "Any orientable, edge-manifold triangle mesh: closed or open, any genus, several components.\n"
@@ -71,7 +72,8 @@ struct Options
   std::string input, output, report, plots, patches, save_patches;
   double target = 0., relative = 0.01, min_angle = 28., features_angle = 60.;
   double time_limit = std::numeric_limits<double>::infinity();
-  double optimization_rounds = 5., chord_error = 0.;
+  double chord_error = 0.;
+  int optimization_rounds = 5, lloyd_iterations = 0;
   std::vector<K::Plane_3> planes;
   bool quiet = false, sequential = false;
 };
@@ -111,6 +113,13 @@ bool parse(int argc, char** argv, Options& o)
         return false;
       }
     };
+    auto count = [&](int& target) { // a whole number from 0 to 100
+      double value = 0.;
+      if(!number(value) || !(value >= 0. && value <= 100. && value == std::floor(value)))
+        return false;
+      target = int(value);
+      return true;
+    };
     bool ok = true;
     if(arg == "--target-edge-length")
       ok = number(o.target) && o.target > 0.;
@@ -137,8 +146,9 @@ bool parse(int argc, char** argv, Options& o)
     else if(arg == "--time-limit")
       ok = number(o.time_limit) && o.time_limit > 0.;
     else if(arg == "--optimization-rounds")
-      ok = number(o.optimization_rounds) && o.optimization_rounds >= 0. && o.optimization_rounds <= 100.
-           && o.optimization_rounds == std::floor(o.optimization_rounds);
+      ok = count(o.optimization_rounds);
+    else if(arg == "--lloyd-iterations")
+      ok = count(o.lloyd_iterations);
     else if(arg == "--chord-error")
       ok = number(o.chord_error) && o.chord_error >= 0.;
     else if(!arg.empty() && arg[0] != '-' && o.input.empty())
@@ -245,11 +255,11 @@ int main(int argc, char** argv)
   const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin())
                                     + CGAL::square(box.zmax() - box.zmin()));
   const double target = o.target > 0. ? o.target : o.relative * diagonal;
-  const auto np = CR::parameters::maximum_chord_error(o.chord_error, CR::parameters::optimization_rounds(int(o.optimization_rounds), CR::parameters::target_edge_length(
+  const auto np = CR::parameters::maximum_chord_error(o.chord_error, CR::parameters::optimization_rounds(o.optimization_rounds, CR::parameters::lloyd_iterations(o.lloyd_iterations, CR::parameters::target_edge_length(
     target, CR::parameters::minimum_angle(
               o.min_angle, CR::parameters::features_angle(
                              o.features_angle, CR::parameters::cut_planes(
-                                                 o.planes, CR::parameters::progress(progress, CGAL::parameters::face_patch_map(patch_of))))))));
+                                                 o.planes, CR::parameters::progress(progress, CGAL::parameters::face_patch_map(patch_of)))))))));
 
   if(!o.save_patches.empty())
   {

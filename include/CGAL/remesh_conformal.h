@@ -51,7 +51,8 @@
 // Named parameters of `remesh_conformal()` (see its documentation): `target_edge_length(l)`,
 // `relative_target_edge_length(r)` (default 0.01 of the bounding-box diagonal),
 // `minimum_angle(degrees)` (default 28), `corner_angle(degrees)` (default 30),
-// `smoothing_iterations(n)` (default 1), `optimization_rounds(n)` (default 5),
+// `smoothing_iterations(n)` (default 1), `lloyd_iterations(n)` (default 0),
+// `optimization_rounds(n)` (default 5),
 // `maximum_scale_ratio(r)` (default 1000) and `progress(callable)` (the last two declared in
 // flatten_poly_annuli.h).
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(target_edge_length)
@@ -59,6 +60,7 @@ CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(relative_target_edge_length)
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(minimum_angle)
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(corner_angle)
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(smoothing_iterations)
+CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(lloyd_iterations)
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(optimization_rounds)
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(sizing_field)
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(maximum_chord_error)
@@ -513,7 +515,7 @@ private:
 inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, const std::vector<double>& scale,
                                              const Extracted_patch& patch,
                                              const Curve_samples& samples, const Sizing& sizing, double min_angle,
-                                             int smoothing_iterations, int optimization_rounds,
+                                             const Planar_smoothing& smoothing, int optimization_rounds,
                                              const std::set<std::pair<std::size_t, std::size_t> >& diagonals_to_split = {},
                                              bool moves_in_parallel = false)
 {
@@ -569,7 +571,7 @@ inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, c
   for(const Planar_seed& seed : seeds_around_points(tips, target_lengths, surface_point))
     seeds.push_back(seed);
   Planar_mesh planar = mesh_planar_domain<Epick>(loops, (std::min)(min_angle, planar_refinement_angle_bound), planar_size,
-                                                 smoothing_iterations, false, local_diagonals_to_split, fixed_points, seeds);
+                                                 smoothing, false, local_diagonals_to_split, fixed_points, seeds);
   if(planar.number_of_samples != result.boundary_ids.size())
     throw Error(Error_code::NOT_AN_EMBEDDING, "remesh_conformal: the boundary samples of a patch overlap in the plane");
   result.seconds_planar_meshing = std::chrono::duration<double>(Clock::now() - start).count();
@@ -759,7 +761,7 @@ Meshed_patches mesh_patches_on_shared_samples(const Poly_annulus_segmentation& s
                                               const std::vector<Extracted_patch>& patches,
                                               const std::vector<Conformal_flattening>& flattenings,
                                               std::vector<std::vector<double> >& scales, const Sizing& sizing, double corner,
-                                              double min_angle, int smoothing, int optimization_rounds,
+                                              double min_angle, const Planar_smoothing& smoothing, int optimization_rounds,
                                               const Time_limit& time_limit, const Progress& progress, Remeshing_report& report)
 {
   Meshed_patches result;
@@ -911,6 +913,10 @@ Meshed_patches mesh_patches_on_shared_samples(const Poly_annulus_segmentation& s
 ///     \cgalParamDescription{passes of Laplacian smoothing in the plane before the optimization on the surface (three passes, the default until 2026-11-25: planar meshing 1.8 times slower on the 87k suspension arm for a mean skewness of 0.1124 instead of 0.1130, the same 0.1178 on the shipped plate)}
 ///     \cgalParamDefault{1}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{lloyd_iterations}
+///     \cgalParamDescription{after the Laplacian passes, at most this many iterations of CGAL's Lloyd smoothing in the plane (`lloyd_optimize_mesh_2()`, with the density of the mesh's own edge lengths, so the grading stays; the fixed points and the boundary samples do not move), then one more refinement to restore the bounds. Off by default: after the optimization on the surface it changes little (see the user manual) (`Conformal_remeshing::parameters::lloyd_iterations()`)}
+///     \cgalParamDefault{0: none}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{optimization_rounds}
 ///     \cgalParamDescription{rounds of edge flips toward valence 6 and vertex smoothing after the refinement, judged by the triangles' shapes on the surface; after them, inner edges longer than 1.26 times the target, and those across bends (whose chord's midpoint stands more than 0.15 times the target off the surface), are split and two more rounds run, then up to two more splits of the same kinds with a round each; no round lowers the smallest angle below the `minimum_angle` bound or stretches an edge past 1.4 times the target (1.26 after the splits) (`Conformal_remeshing::parameters::optimization_rounds()`)}
 ///     \cgalParamDefault{5}
@@ -971,7 +977,8 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
   const double h = choose_parameter(get_parameter(np, internal_np::target_edge_length), relative * diagonal);
   const double min_angle = choose_parameter(get_parameter(np, internal_np::minimum_angle), 28.);
   const double corner = choose_parameter(get_parameter(np, internal_np::corner_angle), 30.);
-  const int smoothing = choose_parameter(get_parameter(np, internal_np::smoothing_iterations), 1);
+  const internal::remeshing::Planar_smoothing smoothing(choose_parameter(get_parameter(np, internal_np::smoothing_iterations), 1),
+                                                        choose_parameter(get_parameter(np, internal_np::lloyd_iterations), 0));
   const int optimization_rounds = choose_parameter(get_parameter(np, internal_np::optimization_rounds), 5);
   const double maximum_scale_ratio = choose_parameter(get_parameter(np, internal_np::maximum_scale_ratio), 1000.);
   if(!(h > 0.) || !std::isfinite(h))
@@ -981,6 +988,8 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
                                            "(no triangulation of a general domain keeps all its angles far above 30)");
   if(!(maximum_scale_ratio > 1.))
     throw Error(Error_code::INVALID_INPUT, "remesh_conformal: the maximum scale ratio must be above 1");
+  if(smoothing.laplacian_iterations < 0 || smoothing.lloyd_iterations < 0)
+    throw Error(Error_code::INVALID_INPUT, "remesh_conformal: the numbers of smoothing and Lloyd iterations must not be negative");
   if(optimization_rounds < 0)
     throw Error(Error_code::INVALID_INPUT, "remesh_conformal: the number of optimization rounds must not be negative");
   const double chord_error = choose_parameter(get_parameter(np, internal_np::maximum_chord_error), 0.);

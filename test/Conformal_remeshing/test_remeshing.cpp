@@ -51,6 +51,16 @@ TEST(RemeshConformal, WavyConcaveStrip)
   check_remeshing(mesh, 20.);
 }
 
+TEST(RemeshConformal, WavyConcaveStripWithLloydSmoothing)
+{
+  // The optional Lloyd iterations in the plane: the same bars, and a mesh of its own.
+  Mesh mesh, plain, lloyd;
+  bm::make_wavy_c_strip(mesh);
+  CR::remesh_conformal(mesh, plain);
+  check_remeshing(mesh, 20., CR::parameters::lloyd_iterations(10), &lloyd);
+  EXPECT_NE(CR::mesh_quality(plain).skewness.mean, CR::mesh_quality(lloyd).skewness.mean);
+}
+
 TEST(RemeshConformal, SphericalCap)
 {
   // The benchmark's coarse cap (input edges 5.7 times the target). Its vertices are kept as
@@ -1121,10 +1131,9 @@ TEST(KeptInputVertices, TheTipOfASharpConeOrACoarseDomeNotACreaseAFlatVertexOrAT
   EXPECT_TRUE(RM::kept_input_vertices(cone, h, RM::kept_tip_tolerance, {CGAL::Epick::Point_3(0.3, 0, 0.5)}).empty());
 }
 
-TEST(PlanarMesher, FixedPointsAreVerticesThatStayPut)
+// The loops of the square [-1, 1]^2 with the hole [-0.3, 0.3]^2, their corners as samples.
+std::vector<std::vector<RM::Boundary_sample> > square_with_square_hole()
 {
-  // A square with a square hole, two fixed points inside: they come right after the samples,
-  // where they were, through the refinement and the smoothing.
   std::vector<RM::Boundary_sample> outer, hole;
   const double x[4] = {-1, 1, 1, -1}, y[4] = {-1, -1, 1, 1};
   for(int i = 0; i < 4; ++i)
@@ -1132,8 +1141,15 @@ TEST(PlanarMesher, FixedPointsAreVerticesThatStayPut)
     outer.push_back(RM::Boundary_sample{CGAL::Epick::Point_2(x[i], y[i]), CGAL::Epick::Point_3(x[i], y[i], 0.)});
     hole.push_back(RM::Boundary_sample{CGAL::Epick::Point_2(0.3 * x[3 - i], 0.3 * y[3 - i]), CGAL::Epick::Point_3(0.3 * x[3 - i], 0.3 * y[3 - i], 0.)});
   }
+  return {outer, hole};
+}
+
+TEST(PlanarMesher, FixedPointsAreVerticesThatStayPut)
+{
+  // A square with a square hole, two fixed points inside: they come right after the samples,
+  // where they were, through the refinement and the smoothing.
   const std::vector<CGAL::Epick::Point_2> fixed{CGAL::Epick::Point_2(0.61, 0.57), CGAL::Epick::Point_2(-0.55, 0.63)};
-  const RM::Planar_mesh m = RM::mesh_planar_domain<CGAL::Epick>({outer, hole}, 25., [](const CGAL::Epick::Point_2&) { return 0.2; },
+  const RM::Planar_mesh m = RM::mesh_planar_domain<CGAL::Epick>(square_with_square_hole(), 25., [](const CGAL::Epick::Point_2&) { return 0.2; },
                                                                 2, true, {}, fixed);
   ASSERT_EQ(m.number_of_fixed_points, m.number_of_samples + 2);
   EXPECT_EQ(m.points[m.number_of_samples], fixed[0]);
@@ -1150,6 +1166,77 @@ TEST(PlanarMesher, FixedPointsAreVerticesThatStayPut)
   }
   EXPECT_TRUE(used.count(int(m.number_of_samples)) && used.count(int(m.number_of_samples) + 1));
   EXPECT_GE(smallest, 20.);
+}
+
+// The mean equiangle skewness of a planar mesh's triangles and the mean length of its edges
+// (counted once per triangle side) where x < -0.5 and where x > 0.5.
+struct Planar_mesh_measures
+{
+  double mean_skewness = 0., coarse_side = 0., fine_side = 0.;
+  explicit Planar_mesh_measures(const RM::Planar_mesh& m)
+  {
+    double coarse = 0., fine = 0.;
+    std::size_t n_coarse = 0, n_fine = 0;
+    for(const auto& t : m.triangles)
+    {
+      const auto lift = [&](int i) { return K::Point_3(m.points[t[i]].x(), m.points[t[i]].y(), 0.); };
+      mean_skewness += CR::triangle_quality(lift(0), lift(1), lift(2)).skewness / double(m.triangles.size());
+      for(int i = 0; i < 3; ++i)
+      {
+        const CGAL::Epick::Point_2 &a = m.points[t[i]], &b = m.points[t[(i + 1) % 3]];
+        const double x = 0.5 * (a.x() + b.x()), length = std::sqrt(CGAL::squared_distance(a, b));
+        if(x < -0.5)
+          coarse += length, ++n_coarse;
+        else if(x > 0.5)
+          fine += length, ++n_fine;
+      }
+    }
+    coarse_side = coarse / double(n_coarse);
+    fine_side = fine / double(n_fine);
+  }
+};
+
+TEST(PlanarMesher, LloydSmoothingKeepsTheDomainTheFixedPointsTheBoundsAndTheGrading)
+{
+  // A square with a square hole and two fixed points, with edges three times shorter toward
+  // x = 1 than toward x = -1; refined, then smoothed by CGAL's Lloyd iterations only.
+  const std::vector<std::vector<RM::Boundary_sample> > loops = square_with_square_hole();
+  const std::vector<CGAL::Epick::Point_2> fixed{CGAL::Epick::Point_2(0.61, 0.57), CGAL::Epick::Point_2(-0.55, 0.63)};
+  const auto size = [](const CGAL::Epick::Point_2& p) { return 0.05 + 0.05 * (1. - p.x()); };
+  const RM::Planar_mesh refined = RM::mesh_planar_domain<CGAL::Epick>(loops, 25., size, RM::Planar_smoothing(0, 0), true, {}, fixed);
+  const RM::Planar_mesh lloyd = RM::mesh_planar_domain<CGAL::Epick>(loops, 25., size, RM::Planar_smoothing(0, 20), true, {}, fixed);
+  for(const RM::Planar_mesh* m : {&refined, &lloyd})
+  {
+    ASSERT_EQ(m->number_of_fixed_points, m->number_of_samples + 2);
+    EXPECT_EQ(m->points[m->number_of_samples], fixed[0]);
+    EXPECT_EQ(m->points[m->number_of_samples + 1], fixed[1]);
+    double area = 0., smallest = 180.;
+    std::set<int> used;
+    for(const auto& t : m->triangles)
+    {
+      const CGAL::Epick::Point_2 &a = m->points[t[0]], &b = m->points[t[1]], &c = m->points[t[2]];
+      EXPECT_EQ(CGAL::orientation(a, b, c), CGAL::POSITIVE);
+      area += CGAL::area(a, b, c);
+      used.insert(t.begin(), t.end());
+      const CR::Triangle_quality q = CR::triangle_quality(K::Point_3(a.x(), a.y(), 0), K::Point_3(b.x(), b.y(), 0), K::Point_3(c.x(), c.y(), 0));
+      smallest = (std::min)({smallest, q.angles[0], q.angles[1], q.angles[2]});
+    }
+    EXPECT_NEAR(area, 4. - 0.36, 1e-12); // the hole stays empty and the rest is covered once
+    EXPECT_EQ(used.size(), m->points.size());
+    EXPECT_GE(smallest, 25.); // the refinement after the smoothing restores the bound
+  }
+  // The Lloyd iterations moved the points and evened out the shapes, and kept the grading: the
+  // refinement's edges are 2.4 times longer on the coarse side than on the fine side.
+  EXPECT_NE(std::vector<CGAL::Epick::Point_2>(refined.points.begin() + std::ptrdiff_t(refined.number_of_fixed_points), refined.points.end()),
+            std::vector<CGAL::Epick::Point_2>(lloyd.points.begin() + std::ptrdiff_t(lloyd.number_of_fixed_points), lloyd.points.end()));
+  const Planar_mesh_measures before(refined), after(lloyd);
+  EXPECT_LT(after.mean_skewness, before.mean_skewness - 0.02);
+  EXPECT_NEAR(after.coarse_side / after.fine_side, before.coarse_side / before.fine_side, 0.15 * before.coarse_side / before.fine_side);
+  // CGAL's Lloyd smoothing takes square roots: not over a kernel with exact constructions. (Coarse:
+  // the exact refinement before the refusal took seconds at the sizes above.)
+  test_support::expect_error(
+    [&] { RM::mesh_planar_domain<CGAL::Epeck>(loops, 25., [](const CGAL::Epick::Point_2&) { return 0.4; }, RM::Planar_smoothing(0, 1)); },
+    CR::Error_code::INVALID_INPUT, {"Lloyd", "floating-point"});
 }
 
 // A size field on the square [-1, 1]^2, finer toward x = 1, that also takes a hint: the index
@@ -1632,6 +1719,8 @@ TEST(RemeshConformal, BadParametersAreRefused)
   EXPECT_THROW(CR::remesh_conformal(patch, CR::parameters::maximum_scale_ratio(0.5)), CR::Error);
   test_support::expect_error([&] { CR::remesh_conformal(patch, CR::parameters::optimization_rounds(-1)); },
                              CR::Error_code::INVALID_INPUT, {"optimization rounds"});
+  test_support::expect_error([&] { CR::remesh_conformal(patch, CR::parameters::lloyd_iterations(-1)); },
+                             CR::Error_code::INVALID_INPUT, {"Lloyd iterations"});
 }
 
 // Issue #8: maximum_running_time stops remesh_conformal() and conformal_flatten() with

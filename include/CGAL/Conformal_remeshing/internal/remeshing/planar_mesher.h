@@ -19,6 +19,7 @@
 #include <CGAL/Mesh_2/Refine_faces.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
+#include <CGAL/lloyd_optimize_mesh_2.h>
 
 #include <array>
 #include <chrono>
@@ -768,6 +769,17 @@ std::vector<Planar_seed> seeds_around_points(const std::vector<std::pair<Epick::
   return seeds;
 }
 
+/// How `mesh_planar_domain()` smooths its refinement: Laplacian passes in the surface's metric,
+/// then CGAL's Lloyd smoothing in the plane (`lloyd_optimize_mesh_2()`), each followed by a
+/// refinement that restores the bounds. (Implicit from an `int`: that many Laplacian passes.)
+struct Planar_smoothing
+{
+  Planar_smoothing(int laplacian = 1, int lloyd = 0) : laplacian_iterations(laplacian), lloyd_iterations(lloyd) {}
+
+  int laplacian_iterations;
+  int lloyd_iterations; ///< at most this many; CGAL stops earlier when the moves become small
+};
+
 /// A planar triangle mesh: the boundary samples first, in loop order, then the fixed interior
 /// points in their order, then the points the refinement added.
 struct Planar_mesh
@@ -839,6 +851,83 @@ void mark_domain(CDT& cdt)
   }
 }
 
+// A point inside each hole of a domain that `mark_domain()` marked (a component of faces at an
+// even nesting depth above 0): CGAL's Lloyd smoothing marks the domain again after each of its
+// iterations from seeds of the outside, and without them would take the holes for the domain.
+template <typename CDT>
+std::vector<typename CDT::Point> hole_seeds(const CDT& cdt)
+{
+  typedef typename CDT::Face_handle Face_handle;
+  std::vector<typename CDT::Point> seeds;
+  std::set<Face_handle> reached;
+  for(Face_handle f : cdt.finite_face_handles())
+  {
+    if(f->info().depth <= 0 || f->info().depth % 2 == 1 || !reached.insert(f).second)
+      continue;
+    seeds.push_back(CGAL::centroid(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()));
+    std::vector<Face_handle> stack{f};
+    while(!stack.empty())
+    {
+      const Face_handle g = stack.back();
+      stack.pop_back();
+      for(int i = 0; i < 3; ++i)
+        if(!cdt.is_constrained(std::make_pair(g, i)) && reached.insert(g->neighbor(i)).second)
+          stack.push_back(g->neighbor(i));
+    }
+  }
+  return seeds;
+}
+
+// CGAL's Lloyd smoothing (`lloyd_optimize_mesh_2()`, at most `iterations` iterations) of the
+// marked domain of `cdt`: it moves every vertex without a constraint, toward the centroid of its
+// Voronoi cell with the density of the mesh's own edge lengths (so the grading stays). The
+// `fixed` points then go back where they were, each in place of the free vertex nearest to it
+// (the one that moved away: a Lloyd move stays in the vertex's Voronoi cell). Needs a kernel
+// with floating-point constructions (CGAL's Lloyd smoothing takes square roots).
+template <typename CDT>
+void lloyd_smooth(CDT& cdt, int iterations, const std::set<typename CDT::Point>& fixed)
+{
+  typedef typename CDT::Vertex_handle Vertex_handle;
+  if constexpr(!std::is_floating_point<typename CDT::Geom_traits::FT>::value)
+    throw Error(Error_code::INVALID_INPUT, "Lloyd smoothing in the plane needs a kernel with floating-point constructions");
+  else
+  {
+    mark_domain(cdt); // the refinement's new faces have no depth yet
+    const std::vector<typename CDT::Point> seeds = hole_seeds(cdt);
+    CGAL::lloyd_optimize_mesh_2(cdt, CGAL::parameters::max_iteration_number = iterations,
+                                CGAL::parameters::seeds_begin = seeds.begin(), CGAL::parameters::seeds_end = seeds.end(),
+                                CGAL::parameters::mark = false);
+    for(const typename CDT::Point& p : fixed)
+    {
+      typename CDT::Locate_type type;
+      int i = 0;
+      const typename CDT::Face_handle f = cdt.locate(p, type, i);
+      if(type == CDT::VERTEX)
+        continue;
+      Vertex_handle nearest;
+      const auto consider = [&](Vertex_handle w) {
+        if(cdt.is_infinite(w) || cdt.are_there_incident_constraints(w) || fixed.count(w->point()))
+          return;
+        if(nearest == Vertex_handle() || CGAL::squared_distance(w->point(), p) < CGAL::squared_distance(nearest->point(), p))
+          nearest = w;
+      };
+      for(int c = 0; c < 3; ++c)
+      {
+        consider(f->vertex(c));
+        if(cdt.is_infinite(f->vertex(c)))
+          continue;
+        auto w = cdt.incident_vertices(f->vertex(c)), done = w;
+        do
+          consider(w);
+        while(++w != done);
+      }
+      if(nearest != Vertex_handle())
+        cdt.remove(nearest);
+      cdt.insert(p);
+    }
+  }
+}
+
 // See `mesh_planar_domain()`. Bounded: splitting an edge at a slit's tip moves the problem away
 // from the tip, and a few rounds clear it; the refinement is not run again (shapes near a slit's
 // tip may fall below the angle bound). The vertices' info (an integer) is overwritten.
@@ -900,9 +989,11 @@ void separate_images_of_one_sample(CDT& cdt, const std::vector<std::vector<Bound
 /// refinement over `Kernel`: a minimum angle of `min_angle_degrees` (up to the refinement's
 /// guarantees near small input angles) and a longest edge below `size(p)` at each triangle's
 /// centroid, and every edge below `size` along it (see `Size_field_criteria_2`). Then
-/// `smoothing_iterations` passes of Laplacian smoothing of the free vertices: each moves to the
-/// mean of its neighbours when its star stays positively oriented, the points are triangulated
-/// again with the same constraints and refined again, so the bounds still hold.
+/// `smoothing.laplacian_iterations` passes of Laplacian smoothing of the free vertices: each moves
+/// to the mean of its neighbours when its star stays positively oriented, the points are
+/// triangulated again with the same constraints and refined again, so the bounds still hold. Then,
+/// if `smoothing.lloyd_iterations` is positive, CGAL's Lloyd smoothing and one more refinement
+/// (see `lloyd_smooth()`; over a kernel with exact constructions it throws `Error`).
 /// With `split_boundary == false` no point is added on the loops (their samples are shared with
 /// a neighbouring patch; see `Fixed_boundary_mesher_2`). No edge joins the samples of a pair in
 /// `diagonals_to_split` (positions in the loops, taken one after the other) unless it is a loop
@@ -910,15 +1001,15 @@ void separate_images_of_one_sample(CDT& cdt, const std::vector<std::vector<Bound
 /// refinement only adds edges at new points, it never comes back. Last, a vertex joined to two
 /// images of one sample (`Boundary_sample::id`: the sides of a slit, near its tip) would join
 /// one surface point twice: the edge to one of them is split at its midpoint, until none is left.
-/// The `fixed_points` (inside the domain, apart from the loops) are vertices of the mesh that the
-/// smoothing does not move. The `seeds` inside the domain are inserted before the refinement, in
-/// order, each unless a vertex is closer than its clearance (see `equilateral_seeds()`); the
-/// smoothing does not move them either (its mean in the plane pulls a seed toward the side where
+/// The `fixed_points` (inside the domain, apart from the loops) are vertices of the mesh that no
+/// smoothing moves. The `seeds` inside the domain are inserted before the refinement, in
+/// order, each unless a vertex is closer than its clearance (see `equilateral_seeds()`); no
+/// smoothing moves them either (the Laplacian mean in the plane pulls a seed toward the side where
 /// the map's scale is smaller: on a flattened tube, the first row's median height fell from 0.87
 /// to 0.48 of its chord on the surface).
 template <typename Kernel, typename Size_field>
 Planar_mesh mesh_planar_domain(const std::vector<std::vector<Boundary_sample> >& loops, double min_angle_degrees,
-                               const Size_field& size, int smoothing_iterations, bool split_boundary = true,
+                               const Size_field& size, const Planar_smoothing& smoothing, bool split_boundary = true,
                                const std::vector<std::pair<std::size_t, std::size_t> >& diagonals_to_split = {},
                                const std::vector<Epick::Point_2>& fixed_points = {},
                                const std::vector<Planar_seed>& seeds = {})
@@ -1024,7 +1115,7 @@ Planar_mesh mesh_planar_domain(const std::vector<std::vector<Boundary_sample> >&
   refine(cdt);
   const Clock::time_point smoothing_start = Clock::now();
 
-  for(int iteration = 0; iteration < smoothing_iterations; ++iteration)
+  for(int iteration = 0; iteration < smoothing.laplacian_iterations; ++iteration)
   {
     std::vector<std::pair<Point, Point> > constraints;
     for(auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e)
@@ -1077,6 +1168,11 @@ Planar_mesh mesh_planar_domain(const std::vector<std::vector<Boundary_sample> >&
     smoothed.insert(free_points.begin(), free_points.end());
     refine(smoothed);
     cdt.swap(smoothed);
+  }
+  if(smoothing.lloyd_iterations > 0)
+  {
+    lloyd_smooth(cdt, smoothing.lloyd_iterations, fixed);
+    refine(cdt);
   }
   const Clock::time_point smoothing_end = Clock::now();
 
