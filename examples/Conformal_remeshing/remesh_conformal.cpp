@@ -327,6 +327,10 @@ int main(int argc, char** argv)
     {
       tools::Json_writer json;
       json.begin_object().field("input", o.input).field("output", o.output).field("target_edge_length", report.target_edge_length);
+      // The options the output depends on, to rerun it (the sequential or parallel run gives the same).
+      json.key("parameters").begin_object().field("min_angle", o.min_angle).field("features_angle", o.features_angle)
+          .field("optimization_rounds", o.optimization_rounds).field("lloyd_iterations", o.lloyd_iterations)
+          .field("chord_error", o.chord_error).field("cut_planes", o.planes.size()).field("patches", o.patches).end_object();
       json.key("seconds").begin_object().field("segmentation", report.seconds_segmentation)
           .field("flattening", report.seconds_flattening).field("meshing_and_pull_back", report.seconds_meshing_stage)
           .field("gluing", report.seconds_gluing).field("ricci_flow_thread_seconds", report.seconds_ricci_flow)
