@@ -148,7 +148,8 @@ TEST(RemeshConformal, ReportsWhereTheMeshingStageTimeGoes)
     EXPECT_GT(seconds, 0.);
   EXPECT_NEAR(planar_sum(phases), report.seconds_planar_meshing, 1e-9);
   EXPECT_NEAR(optimization_sum(phases), report.seconds_optimization, 1e-9);
-  EXPECT_GT(phases.planar_refinement + phases.planar_smoothing, 0.5 * report.seconds_planar_meshing);
+  // (No bound on the phases' shares of the stage: on a loaded machine the set-up took 54% of a
+  // 0.02-second planar stage. Speed is measured in the benchmarks, not asserted here.)
 
   // Without the smoothing and the optimization, their phases take no time (the smoothing's, two
   // clock readings apart; a preemption there could add a little).
