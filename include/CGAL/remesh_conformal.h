@@ -914,7 +914,7 @@ Meshed_patches mesh_patches_on_shared_samples(const Poly_annulus_segmentation& s
 ///     \cgalParamDefault{1}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{lloyd_iterations}
-///     \cgalParamDescription{after the Laplacian passes, at most this many iterations of CGAL's Lloyd smoothing in the plane (`lloyd_optimize_mesh_2()`, with the density of the mesh's own edge lengths, so the grading stays; the fixed points and the boundary samples do not move), then one more refinement to restore the bounds. Off by default: after the optimization on the surface it changes little (see the user manual) (`Conformal_remeshing::parameters::lloyd_iterations()`)}
+///     \cgalParamDescription{after the Laplacian passes, at most this many iterations of CGAL's Lloyd smoothing in the plane (`lloyd_optimize_mesh_2()`, with the density of the mesh's own edge lengths, so the grading stays; the fixed points and the boundary samples do not move), then one more refinement to restore the bounds. Off by default: after the optimization on the surface, 10 iterations lowered the mean skewness of the remeshing benchmark's models by 0.0005 to 0.004 for 6 to 10 times the planar meshing's time (see the user manual) (`Conformal_remeshing::parameters::lloyd_iterations()`)}
 ///     \cgalParamDefault{0: none}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{optimization_rounds}
