@@ -792,7 +792,12 @@ Meshed_patches mesh_patches_on_shared_samples(const Poly_annulus_segmentation& s
         time_limit.check("while meshing the patches");
         if(scales[p].empty()) // a patch may be meshed again (denser curves, split diagonals)
           scales[p] = local_scale(flattenings[p]);
-        remeshed[p] = remesh_flattened_patch(flattenings[p], scales[p], patches[p], samples, sizing, min_angle, smoothing,
+        // The Lloyd iterations, which may take longer than the rest of a patch's meshing, stop at
+        // the time limit too (the next check then throws).
+        Planar_smoothing patch_smoothing = smoothing;
+        if(time_limit.is_limited())
+          patch_smoothing.lloyd_seconds = (std::max)(time_limit.remaining(), 1e-6); // 0 would be none
+        remeshed[p] = remesh_flattened_patch(flattenings[p], scales[p], patches[p], samples, sizing, min_angle, patch_smoothing,
                                              optimization_rounds, diagonals_to_split[p],
                                              std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value);
       }
@@ -914,7 +919,7 @@ Meshed_patches mesh_patches_on_shared_samples(const Poly_annulus_segmentation& s
 ///     \cgalParamDefault{1}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{lloyd_iterations}
-///     \cgalParamDescription{after the Laplacian passes, at most this many iterations of CGAL's Lloyd smoothing in the plane (`lloyd_optimize_mesh_2()`, with the density of the mesh's own edge lengths, so the grading stays; the fixed points and the boundary samples do not move), then one more refinement to restore the bounds. Off by default: after the optimization on the surface, 10 iterations lowered the mean skewness of the remeshing benchmark's models by 0.0005 to 0.004 for 6 to 10 times the planar meshing's time (see the user manual) (`Conformal_remeshing::parameters::lloyd_iterations()`)}
+///     \cgalParamDescription{after the Laplacian passes, at most this many iterations of CGAL's Lloyd smoothing in the plane (`lloyd_optimize_mesh_2()`, with the density of the mesh's own edge lengths, so the grading stays; the fixed points and the boundary samples do not move), then one more refinement to restore the bounds; the iterations stop at the `maximum_running_time` too. Off by default: after the optimization on the surface, 10 iterations lowered the mean skewness of the remeshing benchmark's models by 0.0005 to 0.004 for 6 to 10 times the planar meshing's time (see the user manual) (`Conformal_remeshing::parameters::lloyd_iterations()`)}
 ///     \cgalParamDefault{0: none}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{optimization_rounds}

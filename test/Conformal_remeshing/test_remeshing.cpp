@@ -1233,6 +1233,15 @@ TEST(PlanarMesher, LloydSmoothingKeepsTheDomainTheFixedPointsTheBoundsAndTheGrad
   const Planar_mesh_measures before(refined), after(lloyd);
   EXPECT_LT(after.mean_skewness, before.mean_skewness - 0.02);
   EXPECT_NEAR(after.coarse_side / after.fine_side, before.coarse_side / before.fine_side, 0.15 * before.coarse_side / before.fine_side);
+  // A time limit stops it: one of a nanosecond, before any move (CGAL checks it once it has
+  // tagged the Voronoi diagram's blind faces and computed a vertex's move, milliseconds of work on
+  // this finer mesh), leaves the refinement's mesh.
+  const auto fine = [](const CGAL::Epick::Point_2&) { return 0.03; };
+  const RM::Planar_mesh fine_refined = RM::mesh_planar_domain<CGAL::Epick>(loops, 25., fine, RM::Planar_smoothing(0, 0), true, {}, fixed);
+  const RM::Planar_mesh stopped = RM::mesh_planar_domain<CGAL::Epick>(loops, 25., fine, RM::Planar_smoothing(0, 20, 1e-9), true, {}, fixed);
+  EXPECT_GT(fine_refined.points.size(), 3000u);
+  EXPECT_EQ(stopped.points, fine_refined.points);
+  EXPECT_EQ(stopped.triangles, fine_refined.triangles);
   // CGAL's Lloyd smoothing takes square roots: not over a kernel with exact constructions. (Coarse:
   // the exact refinement before the refusal took seconds at the sizes above.)
   test_support::expect_error(

@@ -774,10 +774,15 @@ std::vector<Planar_seed> seeds_around_points(const std::vector<std::pair<Epick::
 /// refinement that restores the bounds. (Implicit from an `int`: that many Laplacian passes.)
 struct Planar_smoothing
 {
-  Planar_smoothing(int laplacian = 1, int lloyd = 0) : laplacian_iterations(laplacian), lloyd_iterations(lloyd) {}
+  Planar_smoothing(int laplacian = 1, int lloyd = 0, double lloyd_time_limit = 0.)
+    : laplacian_iterations(laplacian), lloyd_iterations(lloyd), lloyd_seconds(lloyd_time_limit)
+  {}
 
   int laplacian_iterations;
   int lloyd_iterations; ///< at most this many; CGAL stops earlier when the moves become small
+  /// CGAL's time limit on the Lloyd smoothing (0: none), in CPU seconds of the process (all its
+  /// threads: with patches meshed in parallel it stops earlier than the wall clock says)
+  double lloyd_seconds;
 };
 
 /// A planar triangle mesh: the boundary samples first, in loop order, then the fixed interior
@@ -878,14 +883,14 @@ std::vector<typename CDT::Point> hole_seeds(const CDT& cdt)
   return seeds;
 }
 
-// CGAL's Lloyd smoothing (`lloyd_optimize_mesh_2()`, at most `iterations` iterations) of the
-// marked domain of `cdt`: it moves every vertex without a constraint, toward the centroid of its
+// CGAL's Lloyd smoothing (`lloyd_optimize_mesh_2()`, at most `smoothing.lloyd_iterations`
+// iterations, within `smoothing.lloyd_seconds` when positive) of the marked domain of `cdt`: it moves every vertex without a constraint, toward the centroid of its
 // Voronoi cell with the density of the mesh's own edge lengths (so the grading stays). The
 // `fixed` points then go back where they were, each in place of the free vertex nearest to it
 // (the one that moved away: a Lloyd move stays in the vertex's Voronoi cell). Needs a kernel
 // with floating-point constructions (CGAL's Lloyd smoothing takes square roots).
 template <typename CDT>
-void lloyd_smooth(CDT& cdt, int iterations, const std::set<typename CDT::Point>& fixed)
+void lloyd_smooth(CDT& cdt, const Planar_smoothing& smoothing, const std::set<typename CDT::Point>& fixed)
 {
   typedef typename CDT::Vertex_handle Vertex_handle;
   if constexpr(!std::is_floating_point<typename CDT::Geom_traits::FT>::value)
@@ -894,8 +899,8 @@ void lloyd_smooth(CDT& cdt, int iterations, const std::set<typename CDT::Point>&
   {
     mark_domain(cdt); // the refinement's new faces have no depth yet
     const std::vector<typename CDT::Point> seeds = hole_seeds(cdt);
-    CGAL::lloyd_optimize_mesh_2(cdt, CGAL::parameters::max_iteration_number = iterations,
-                                CGAL::parameters::seeds_begin = seeds.begin(), CGAL::parameters::seeds_end = seeds.end(),
+    CGAL::lloyd_optimize_mesh_2(cdt, CGAL::parameters::max_iteration_number = smoothing.lloyd_iterations,
+                                CGAL::parameters::time_limit = smoothing.lloyd_seconds, CGAL::parameters::seeds_begin = seeds.begin(), CGAL::parameters::seeds_end = seeds.end(),
                                 CGAL::parameters::mark = false);
     for(const typename CDT::Point& p : fixed)
     {
@@ -1171,7 +1176,7 @@ Planar_mesh mesh_planar_domain(const std::vector<std::vector<Boundary_sample> >&
   }
   if(smoothing.lloyd_iterations > 0)
   {
-    lloyd_smooth(cdt, smoothing.lloyd_iterations, fixed);
+    lloyd_smooth(cdt, smoothing, fixed);
     refine(cdt);
   }
   const Clock::time_point smoothing_end = Clock::now();
