@@ -275,45 +275,80 @@ TEST(Sizing, ShorterNearThePlacesToMeshAgain)
   EXPECT_NEAR(both(K::Point_3(2., -1., 0.)), 0.5 + 0.5 * std::sqrt(5.), 1e-12);
 }
 
+namespace {
+
+namespace RM = CR::internal::remeshing;
+
+// The loops of the square [-1, 1]^2 with the hole [-0.3, 0.3]^2, their corners as samples.
+std::vector<std::vector<RM::Boundary_sample> > square_with_square_hole()
+{
+  std::vector<RM::Boundary_sample> outer, hole;
+  const double x[4] = {-1, 1, 1, -1}, y[4] = {-1, -1, 1, 1};
+  for(int i = 0; i < 4; ++i)
+  {
+    outer.push_back(RM::Boundary_sample{CGAL::Epick::Point_2(x[i], y[i]), CGAL::Epick::Point_3(x[i], y[i], 0.)});
+    hole.push_back(RM::Boundary_sample{CGAL::Epick::Point_2(0.3 * x[3 - i], 0.3 * y[3 - i]), CGAL::Epick::Point_3(0.3 * x[3 - i], 0.3 * y[3 - i], 0.)});
+  }
+  return {outer, hole};
+}
+
+// What the planar tests check of a planar mesh: whether every triangle is counterclockwise, the
+// vertices the triangles use, the area covered, the smallest angle, the mean equiangle skewness,
+// and the mean length of the edges (counted once per triangle side) where x < -0.5 and x > 0.5.
+struct Planar_mesh_measures
+{
+  bool counterclockwise = true;
+  std::set<int> used_vertices;
+  double area = 0., smallest_angle = 180., mean_skewness = 0., coarse_side = 0., fine_side = 0.;
+  explicit Planar_mesh_measures(const RM::Planar_mesh& m)
+  {
+    double coarse = 0., fine = 0.;
+    std::size_t n_coarse = 0, n_fine = 0;
+    for(const auto& t : m.triangles)
+    {
+      const CGAL::Epick::Point_2 &a = m.points[t[0]], &b = m.points[t[1]], &c = m.points[t[2]];
+      counterclockwise = counterclockwise && CGAL::orientation(a, b, c) == CGAL::POSITIVE;
+      used_vertices.insert(t.begin(), t.end());
+      area += CGAL::area(a, b, c);
+      const CR::Triangle_quality q = CR::triangle_quality(K::Point_3(a.x(), a.y(), 0), K::Point_3(b.x(), b.y(), 0), K::Point_3(c.x(), c.y(), 0));
+      smallest_angle = (std::min)({smallest_angle, q.angles[0], q.angles[1], q.angles[2]});
+      mean_skewness += q.skewness / double(m.triangles.size());
+      for(int i = 0; i < 3; ++i)
+      {
+        const CGAL::Epick::Point_2 &p = m.points[t[i]], &r = m.points[t[(i + 1) % 3]];
+        const double x = 0.5 * (p.x() + r.x()), length = std::sqrt(CGAL::squared_distance(p, r));
+        if(x < -0.5)
+          coarse += length, ++n_coarse;
+        else if(x > 0.5)
+          fine += length, ++n_fine;
+      }
+    }
+    coarse_side = n_coarse > 0 ? coarse / double(n_coarse) : 0.;
+    fine_side = n_fine > 0 ? fine / double(n_fine) : 0.;
+  }
+};
+
+} // namespace
+
 TEST(RemeshConformal, PlanarStageWithExactConstructions)
 {
   // The planar mesher is templated on the kernel: a square with a square hole over Epeck.
-  namespace RM = CR::internal::remeshing;
-  auto square = [](double half, bool clockwise) {
-    std::vector<RM::Boundary_sample> loop;
-    const double x[4] = {-half, half, half, -half}, y[4] = {-half, -half, half, half};
-    for(int i = 0; i < 4; ++i)
-    {
-      const int k = clockwise ? 3 - i : i;
-      loop.push_back(RM::Boundary_sample{CGAL::Epick::Point_2(x[k], y[k]), CGAL::Epick::Point_3(x[k], y[k], 0.)});
-    }
-    return loop;
-  };
-  const std::vector<std::vector<RM::Boundary_sample> > loops{square(1., false), square(0.3, true)};
+  const std::vector<std::vector<RM::Boundary_sample> > loops = square_with_square_hole();
   const RM::Planar_mesh exact = RM::mesh_planar_domain<CGAL::Epeck>(loops, 25., [](const CGAL::Epick::Point_2&) { return 0.2; }, 1);
   const RM::Planar_mesh inexact = RM::mesh_planar_domain<CGAL::Epick>(loops, 25., [](const CGAL::Epick::Point_2&) { return 0.2; }, 1);
   for(const RM::Planar_mesh* m : {&exact, &inexact})
   {
     ASSERT_GT(m->triangles.size(), 50u);
-    double area = 0., smallest = 180.;
-    for(const auto& t : m->triangles)
-    {
-      const CGAL::Epick::Point_2 &a = m->points[t[0]], &b = m->points[t[1]], &c = m->points[t[2]];
-      EXPECT_EQ(CGAL::orientation(a, b, c), CGAL::POSITIVE);
-      area += CGAL::area(a, b, c);
-      const CR::Triangle_quality tq = CR::triangle_quality(K::Point_3(a.x(), a.y(), 0), K::Point_3(b.x(), b.y(), 0), K::Point_3(c.x(), c.y(), 0));
-      smallest = (std::min)({smallest, tq.angles[0], tq.angles[1], tq.angles[2]});
-    }
-    EXPECT_NEAR(area, 4. - 0.36, 1e-12); // the square minus the hole, exactly covered
+    const Planar_mesh_measures measures(*m);
+    EXPECT_TRUE(measures.counterclockwise);
+    EXPECT_NEAR(measures.area, 4. - 0.36, 1e-12); // the square minus the hole, exactly covered
     // The bound asked for, not CGAL's default of 20.7 degrees (which the criteria fell back to
     // when their virtual base was left to its default constructor).
-    EXPECT_GE(smallest, 25.);
+    EXPECT_GE(measures.smallest_angle, 25.);
   }
 }
 
 namespace {
-
-namespace RM = CR::internal::remeshing;
 
 // The surface z = 0.2 sin(3x) over the plane: its map from the plane is not conformal, so the
 // optimization has to judge shapes on the surface, not in the plane.
@@ -1132,19 +1167,6 @@ TEST(KeptInputVertices, TheTipOfASharpConeOrACoarseDomeNotACreaseAFlatVertexOrAT
   EXPECT_TRUE(RM::kept_input_vertices(cone, h, RM::kept_tip_tolerance, {CGAL::Epick::Point_3(0.3, 0, 0.5)}).empty());
 }
 
-// The loops of the square [-1, 1]^2 with the hole [-0.3, 0.3]^2, their corners as samples.
-std::vector<std::vector<RM::Boundary_sample> > square_with_square_hole()
-{
-  std::vector<RM::Boundary_sample> outer, hole;
-  const double x[4] = {-1, 1, 1, -1}, y[4] = {-1, -1, 1, 1};
-  for(int i = 0; i < 4; ++i)
-  {
-    outer.push_back(RM::Boundary_sample{CGAL::Epick::Point_2(x[i], y[i]), CGAL::Epick::Point_3(x[i], y[i], 0.)});
-    hole.push_back(RM::Boundary_sample{CGAL::Epick::Point_2(0.3 * x[3 - i], 0.3 * y[3 - i]), CGAL::Epick::Point_3(0.3 * x[3 - i], 0.3 * y[3 - i], 0.)});
-  }
-  return {outer, hole};
-}
-
 TEST(PlanarMesher, FixedPointsAreVerticesThatStayPut)
 {
   // A square with a square hole, two fixed points inside: they come right after the samples,
@@ -1155,47 +1177,10 @@ TEST(PlanarMesher, FixedPointsAreVerticesThatStayPut)
   ASSERT_EQ(m.number_of_fixed_points, m.number_of_samples + 2);
   EXPECT_EQ(m.points[m.number_of_samples], fixed[0]);
   EXPECT_EQ(m.points[m.number_of_samples + 1], fixed[1]);
-  std::set<int> used;
-  double smallest = 180.;
-  for(const auto& t : m.triangles)
-  {
-    used.insert(t.begin(), t.end());
-    const CR::Triangle_quality q = CR::triangle_quality(K::Point_3(m.points[t[0]].x(), m.points[t[0]].y(), 0),
-                                                        K::Point_3(m.points[t[1]].x(), m.points[t[1]].y(), 0),
-                                                        K::Point_3(m.points[t[2]].x(), m.points[t[2]].y(), 0));
-    smallest = (std::min)({smallest, q.angles[0], q.angles[1], q.angles[2]});
-  }
-  EXPECT_TRUE(used.count(int(m.number_of_samples)) && used.count(int(m.number_of_samples) + 1));
-  EXPECT_GE(smallest, 20.);
+  const Planar_mesh_measures measures(m);
+  EXPECT_TRUE(measures.used_vertices.count(int(m.number_of_samples)) && measures.used_vertices.count(int(m.number_of_samples) + 1));
+  EXPECT_GE(measures.smallest_angle, 20.);
 }
-
-// The mean equiangle skewness of a planar mesh's triangles and the mean length of its edges
-// (counted once per triangle side) where x < -0.5 and where x > 0.5.
-struct Planar_mesh_measures
-{
-  double mean_skewness = 0., coarse_side = 0., fine_side = 0.;
-  explicit Planar_mesh_measures(const RM::Planar_mesh& m)
-  {
-    double coarse = 0., fine = 0.;
-    std::size_t n_coarse = 0, n_fine = 0;
-    for(const auto& t : m.triangles)
-    {
-      const auto lift = [&](int i) { return K::Point_3(m.points[t[i]].x(), m.points[t[i]].y(), 0.); };
-      mean_skewness += CR::triangle_quality(lift(0), lift(1), lift(2)).skewness / double(m.triangles.size());
-      for(int i = 0; i < 3; ++i)
-      {
-        const CGAL::Epick::Point_2 &a = m.points[t[i]], &b = m.points[t[(i + 1) % 3]];
-        const double x = 0.5 * (a.x() + b.x()), length = std::sqrt(CGAL::squared_distance(a, b));
-        if(x < -0.5)
-          coarse += length, ++n_coarse;
-        else if(x > 0.5)
-          fine += length, ++n_fine;
-      }
-    }
-    coarse_side = coarse / double(n_coarse);
-    fine_side = fine / double(n_fine);
-  }
-};
 
 TEST(PlanarMesher, LloydSmoothingKeepsTheDomainTheFixedPointsTheBoundsAndTheGrading)
 {
@@ -1206,31 +1191,22 @@ TEST(PlanarMesher, LloydSmoothingKeepsTheDomainTheFixedPointsTheBoundsAndTheGrad
   const auto size = [](const CGAL::Epick::Point_2& p) { return 0.05 + 0.05 * (1. - p.x()); };
   const RM::Planar_mesh refined = RM::mesh_planar_domain<CGAL::Epick>(loops, 25., size, RM::Planar_smoothing(0, 0), true, {}, fixed);
   const RM::Planar_mesh lloyd = RM::mesh_planar_domain<CGAL::Epick>(loops, 25., size, RM::Planar_smoothing(0, 20), true, {}, fixed);
-  for(const RM::Planar_mesh* m : {&refined, &lloyd})
-  {
-    ASSERT_EQ(m->number_of_fixed_points, m->number_of_samples + 2);
-    EXPECT_EQ(m->points[m->number_of_samples], fixed[0]);
-    EXPECT_EQ(m->points[m->number_of_samples + 1], fixed[1]);
-    double area = 0., smallest = 180.;
-    std::set<int> used;
-    for(const auto& t : m->triangles)
-    {
-      const CGAL::Epick::Point_2 &a = m->points[t[0]], &b = m->points[t[1]], &c = m->points[t[2]];
-      EXPECT_EQ(CGAL::orientation(a, b, c), CGAL::POSITIVE);
-      area += CGAL::area(a, b, c);
-      used.insert(t.begin(), t.end());
-      const CR::Triangle_quality q = CR::triangle_quality(K::Point_3(a.x(), a.y(), 0), K::Point_3(b.x(), b.y(), 0), K::Point_3(c.x(), c.y(), 0));
-      smallest = (std::min)({smallest, q.angles[0], q.angles[1], q.angles[2]});
-    }
-    EXPECT_NEAR(area, 4. - 0.36, 1e-12); // the hole stays empty and the rest is covered once
-    EXPECT_EQ(used.size(), m->points.size());
-    EXPECT_GE(smallest, 25.); // the refinement after the smoothing restores the bound
-  }
+  const Planar_mesh_measures before(refined), after(lloyd);
+  const auto check = [&](const RM::Planar_mesh& m, const Planar_mesh_measures& measures) {
+    ASSERT_EQ(m.number_of_fixed_points, m.number_of_samples + 2);
+    EXPECT_EQ(m.points[m.number_of_samples], fixed[0]);
+    EXPECT_EQ(m.points[m.number_of_samples + 1], fixed[1]);
+    EXPECT_TRUE(measures.counterclockwise);
+    EXPECT_NEAR(measures.area, 4. - 0.36, 1e-12); // the hole stays empty and the rest is covered once
+    EXPECT_EQ(measures.used_vertices.size(), m.points.size());
+    EXPECT_GE(measures.smallest_angle, 25.); // the refinement after the smoothing restores the bound
+  };
+  check(refined, before);
+  check(lloyd, after);
   // The Lloyd iterations moved the points and evened out the shapes, and kept the grading: the
   // refinement's edges are 2.4 times longer on the coarse side than on the fine side.
   EXPECT_NE(std::vector<CGAL::Epick::Point_2>(refined.points.begin() + std::ptrdiff_t(refined.number_of_fixed_points), refined.points.end()),
             std::vector<CGAL::Epick::Point_2>(lloyd.points.begin() + std::ptrdiff_t(lloyd.number_of_fixed_points), lloyd.points.end()));
-  const Planar_mesh_measures before(refined), after(lloyd);
   EXPECT_LT(after.mean_skewness, before.mean_skewness - 0.02);
   EXPECT_NEAR(after.coarse_side / after.fine_side, before.coarse_side / before.fine_side, 0.15 * before.coarse_side / before.fine_side);
   // A time limit stops it: one of a nanosecond, before any move (CGAL checks it once it has
