@@ -100,6 +100,17 @@ TEST(RemeshConformal, CgalNefertiti)
   EXPECT_LT(CR::compare_to_reference(output, mesh).relative_distance_from_reference, 0.003);
 }
 
+TEST(RemeshConformal, CgalBladeWithTinyCurvesAtTheEndsOfAThinStrip)
+{
+  // A flat strip 0.033 wide (a fortieth of the target) along the trailing edge: its ends are
+  // curves of one chord that tiny, and the curves that meet them are sampled graded from it (see
+  // `tiny_curve`). With chords a target long beside them, a triangle had 0.034 degrees; 16.6 now,
+  // with 94% of the edges within the range (the graded ones are shorter).
+  Mesh mesh;
+  ASSERT_TRUE(CR::read_and_check_mesh(std::string(CONFORMAL_REMESHING_CGAL_DATA) + "/meshes/blade.off", mesh).is_valid());
+  check_remeshing(mesh, remeshing_checks::Quality_bars(15.).edge_share_above(0.93));
+}
+
 TEST(RemeshConformal, InPlaceEqualsSeparateOutput)
 {
   Mesh mesh;
