@@ -12,7 +12,6 @@
 #include <CGAL/Conformal_remeshing/internal/remeshing/sizing.h>
 #include <CGAL/Conformal_remeshing/segment_into_poly_annuli.h>
 
-#include <array>
 #include <cmath>
 #include <limits>
 #include <map>
@@ -223,29 +222,22 @@ inline Curve_samples sample_boundary_curves(const Poly_annulus_segmentation& s, 
   std::map<std::pair<Vertex, Vertex>, int> curves_between;
   for(const auto& curve : curves)
     ++curves_between[std::minmax(curve.front(), curve.back())];
-  // The curves' lengths, and at each curve end the two shortest curves there (a curve grades by
-  // the others).
+  // The curves' lengths, and the curves that end at each vertex.
   std::vector<double> curve_length(curves.size(), 0.);
-  std::map<Vertex, std::array<std::pair<double, std::size_t>, 2> > shortest_at;
+  std::map<Vertex, std::vector<std::size_t> > curves_at;
   for(std::size_t c = 0; c < curves.size(); ++c)
   {
     for(std::size_t i = 0; i + 1 < curves[c].size(); ++i)
       curve_length[c] += std::sqrt(CGAL::squared_distance(m.point(curves[c][i]), m.point(curves[c][i + 1])));
-    const double none = std::numeric_limits<double>::infinity();
-    for(Vertex end : {curves[c].front(), curves[c].back()})
-    {
-      auto& two = shortest_at.emplace(end, std::array<std::pair<double, std::size_t>, 2>{{{none, c}, {none, c}}}).first->second;
-      const std::pair<double, std::size_t> entry(curve_length[c], c);
-      if(entry < two[0])
-        two = {{entry, two[0]}};
-      else if(entry < two[1] && entry != two[0])
-        two[1] = entry;
-    }
+    curves_at[curves[c].front()].push_back(c);
+    curves_at[curves[c].back()].push_back(c);
   }
   // The length of the shortest curve other than `c` at `end`, if it is tiny, else infinity.
   auto grading_start = [&](std::size_t c, Vertex end) {
-    const auto& two = shortest_at.at(end);
-    const double shortest = two[0].second != c ? two[0].first : two[1].first;
+    double shortest = std::numeric_limits<double>::infinity();
+    for(std::size_t other : curves_at.at(end))
+      if(other != c)
+        shortest = (std::min)(shortest, curve_length[other]);
     return shortest < tiny_curve * sizing.target() ? shortest : std::numeric_limits<double>::infinity();
   };
 

@@ -884,8 +884,9 @@ std::vector<typename CDT::Point> hole_seeds(const CDT& cdt)
 }
 
 // CGAL's Lloyd smoothing (`lloyd_optimize_mesh_2()`, at most `smoothing.lloyd_iterations`
-// iterations, within `smoothing.lloyd_seconds` when positive) of the marked domain of `cdt`: it moves every vertex without a constraint, toward the centroid of its
-// Voronoi cell with the density of the mesh's own edge lengths (so the grading stays). The
+// iterations, within `smoothing.lloyd_seconds` when positive) of the marked domain of `cdt`: it
+// moves every vertex without a constraint, toward the centroid of its Voronoi cell with the
+// density of the mesh's own edge lengths (so the grading stays). The
 // `fixed` points then go back where they were, each in place of the free vertex nearest to it
 // (the one that moved away: a Lloyd move stays in the vertex's Voronoi cell). Needs a kernel
 // with floating-point constructions (CGAL's Lloyd smoothing takes square roots).
@@ -900,7 +901,8 @@ void lloyd_smooth(CDT& cdt, const Planar_smoothing& smoothing, const std::set<ty
     mark_domain(cdt); // the refinement's new faces have no depth yet
     const std::vector<typename CDT::Point> seeds = hole_seeds(cdt);
     CGAL::lloyd_optimize_mesh_2(cdt, CGAL::parameters::max_iteration_number = smoothing.lloyd_iterations,
-                                CGAL::parameters::time_limit = smoothing.lloyd_seconds, CGAL::parameters::seeds_begin = seeds.begin(), CGAL::parameters::seeds_end = seeds.end(),
+                                CGAL::parameters::time_limit = smoothing.lloyd_seconds,
+                                CGAL::parameters::seeds_begin = seeds.begin(), CGAL::parameters::seeds_end = seeds.end(),
                                 CGAL::parameters::mark = false);
     for(const typename CDT::Point& p : fixed)
     {
