@@ -1,9 +1,11 @@
 // Copyright (c) 2026 CGAL Conformal Remeshing contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// libFuzzer target: the mesh file readers and the input checks. The first byte of the input
-// picks the file extension (OFF, OBJ, PLY, STL; ASCII or binary is up to the content), the rest
-// is written to a file that read_and_check_mesh() reads.
+// libFuzzer target: the mesh file readers, the input repairs and the input checks. The first
+// byte of the input picks the file extension (OFF, OBJ, PLY, STL; ASCII or binary is up to the
+// content) with its two lowest bits, and with the next one whether every repair of
+// Input_repairs is made (as the remesh_conformal tool does); the rest is written to a file that
+// read_and_check_mesh() reads.
 //
 // The defined outcomes are: a report, or a CGAL::Conformal_remeshing::Error. Anything else (a
 // crash, a sanitizer report, another exception, an inconsistent report) is a bug.
@@ -53,11 +55,13 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     out.write(reinterpret_cast<const char*>(data + 1), std::streamsize(size - 1));
   }
 
+  const bool repair = (data[0] >> 2) & 1;
   Mesh mesh;
   CR::Mesh_check_report report;
+  CR::Input_repair_report repaired;
   try
   {
-    report = CR::read_and_check_mesh(file, mesh);
+    report = CR::read_and_check_mesh(file, mesh, repair ? CR::Input_repairs::all() : CR::Input_repairs(), repaired);
   }
   catch(const CR::Error& e)
   {
@@ -66,9 +70,16 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     return 0;
   }
 
-  // The report and the mesh must agree with each other.
+  // The report and the mesh must agree with each other, and with what was repaired.
   if(report.summary().empty())
     fail("empty summary");
+  if(!repair && repaired.any())
+    fail("a repair that was not asked for");
+  if(report.number_of_faces != repaired.file_face.size())
+    fail("not one file face per face");
+  for(std::size_t f : repaired.file_face)
+    if(f >= repaired.file_faces)
+      fail("a face mapped to no face of the file");
   if(report.topology_available)
   {
     // CGAL counts an isolated vertex as a broken halfedge structure; the checks report it.

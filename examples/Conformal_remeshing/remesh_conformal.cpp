@@ -4,8 +4,12 @@
 //                    [--features-angle DEG] [--patches FILE] [--cut-plane a,b,c,d]...
 //                    [--save-patches DIR] [--sequential] [--report FILE.json] [--plots DIR] [--quiet]
 //                    [--time-limit SECONDS] [--optimization-rounds N] [--lloyd-iterations N] [--chord-error E]
+//                    [--no-repair]
 //
-// Progress goes to standard error; OUT is written completely or not at all. Exit codes: 0
+// The input's polygons are triangulated, its faces oriented consistently, its isolated vertices
+// removed and its borders along the same points stitched first (CR::Input_repairs), unless
+// --no-repair. Progress goes to standard
+// error; OUT is written completely or not at all. Exit codes: 0
 // success, 1 the input cannot be remeshed (defects, unsupported topology, failed flattening),
 // 2 the tool could not run (bad arguments, unreadable input, unwritable output), 3 the time
 // limit was exceeded (nothing written).
@@ -46,13 +50,14 @@ const char* usage =
   "                        [--features-angle DEG] [--patches FILE] [--cut-plane a,b,c,d]...\n"
   "                        [--save-patches DIR] [--sequential] [--report FILE.json] [--plots DIR] [--quiet]\n"
   "                        [--time-limit SECONDS] [--optimization-rounds N] [--lloyd-iterations N] [--chord-error E]\n"
+  "                        [--no-repair]\n"
   "  IN, OUT                 mesh files (.off .obj .ply .stl); OUT is written atomically\n"
   "  --target-edge-length L  target edge length in the input's units\n"
   "  --relative-edge-length R  target edge length as a fraction of the bounding-box diagonal (default 0.01)\n"
   "  --min-angle DEG         smallest angle the optimization on the surface keeps (default 28;\n"
   "                          the planar Delaunay refinement uses at most 20.7)\n"
   "  --features-angle DEG    edges with a dihedral angle above DEG are sharp features (default 60; 0: none)\n"
-  "  --patches FILE          user patches: one integer patch id per input face, in face order\n"
+  "  --patches FILE          user patches: one integer patch id per face of IN, in face order\n"
   "  --cut-plane a,b,c,d     cut the surface by the plane ax+by+cz+d=0 first (repeatable)\n"
   "  --save-patches DIR      DIR/patch_N.off and DIR/patch_N_flattening.svg for every patch (DIR is created)\n"
   "  --sequential            one patch at a time (default: in parallel when built with TBB)\n"
@@ -64,6 +69,9 @@ const char* usage =
   "  --lloyd-iterations N    at most N iterations of CGAL's Lloyd smoothing in the plane before them (default 0: none)\n"
   "  --chord-error E         shorter edges where the surface bends, so that chords deviate from it by at most E\n"
   "                          (input units; down to 1/16 of the target length; default 0: uniform)\n"
+  "  --no-repair             refuse polygons, inconsistent orientation, isolated vertices and cracks (by default\n"
+  "                          polygons are triangulated, faces oriented, isolated vertices removed and borders along\n"
+  "                          the same points stitched first)\n"
   "Any orientable, edge-manifold triangle mesh: closed or open, any genus, several components.\n"
   "exit code: 0 success, 1 the input cannot be remeshed, 2 the tool could not run, 3 time limit exceeded\n";
 
@@ -75,7 +83,7 @@ struct Options
   double chord_error = 0.;
   int optimization_rounds = 5, lloyd_iterations = 0;
   std::vector<K::Plane_3> planes;
-  bool quiet = false, sequential = false;
+  bool quiet = false, sequential = false, repair = true;
 };
 
 bool parse_plane(const std::string& text, std::vector<K::Plane_3>& planes)
@@ -143,6 +151,8 @@ bool parse(int argc, char** argv, Options& o)
       o.plots = argv[++i];
     else if(arg == "--quiet")
       o.quiet = true;
+    else if(arg == "--no-repair")
+      o.repair = false;
     else if(arg == "--time-limit")
       ok = number(o.time_limit) && o.time_limit > 0.;
     else if(arg == "--optimization-rounds")
@@ -213,13 +223,18 @@ int main(int argc, char** argv)
   }
 
   Mesh input;
+  CR::Input_repair_report repaired;
   try
   {
     progress("reading " + o.input);
-    const CR::Mesh_check_report checks = CR::read_and_check_mesh(o.input, input);
+    const CR::Mesh_check_report checks
+      = CR::read_and_check_mesh(o.input, input, o.repair ? CR::Input_repairs::all() : CR::Input_repairs(), repaired);
+    if(repaired.any())
+      progress("repaired the input: " + repaired.summary());
     if(!checks.is_valid())
     {
-      std::cerr << "remesh_conformal: invalid input '" << o.input << "': " << checks.summary() << "\n";
+      std::cerr << "remesh_conformal: invalid input '" << o.input << "': " << checks.summary()
+                << (repaired.any() ? " (after the repairs: " + repaired.summary() + ")" : std::string()) << "\n";
       return 1;
     }
   }
@@ -240,16 +255,17 @@ int main(int argc, char** argv)
     long id = 0;
     while(in >> id)
       ids.push_back(id);
-    if(!in.eof() || ids.size() != input.number_of_faces()
+    // One id per face of the file: a triangulated polygon's triangles take its id.
+    if(!in.eof() || ids.size() != repaired.file_faces
        || std::any_of(ids.begin(), ids.end(), [](long i) { return i < 0; }))
     {
-      std::cerr << "remesh_conformal: cannot read '" << o.patches << "': expected " << input.number_of_faces()
+      std::cerr << "remesh_conformal: cannot read '" << o.patches << "': expected " << repaired.file_faces
                 << " non-negative integer patch ids (one per face), found " << ids.size()
                 << (in.eof() ? "" : " before a non-integer") << "\n";
       return 2;
     }
     for(Mesh::Face_index f : input.faces())
-      patch_of[f] = std::size_t(ids[f.idx()]);
+      patch_of[f] = std::size_t(ids[repaired.file_face[f.idx()]]);
   }
   const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(input);
   const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin())
@@ -330,7 +346,12 @@ int main(int argc, char** argv)
       // The options the output depends on, to rerun it (the sequential or parallel run gives the same).
       json.key("parameters").begin_object().field("min_angle", o.min_angle).field("features_angle", o.features_angle)
           .field("optimization_rounds", o.optimization_rounds).field("lloyd_iterations", o.lloyd_iterations)
-          .field("chord_error", o.chord_error).field("cut_planes", o.planes.size()).field("patches", o.patches).end_object();
+          .field("chord_error", o.chord_error).field("cut_planes", o.planes.size()).field("patches", o.patches)
+          .field("repair", o.repair).end_object();
+      json.key("input_repairs").begin_object().field("triangulated_polygons", repaired.triangulated_polygons)
+          .field("triangles_from_polygons", repaired.triangles_from_polygons).field("reoriented_faces", repaired.reoriented_faces)
+          .field("removed_isolated_vertices", repaired.removed_isolated_vertices)
+          .field("stitched_vertices", repaired.stitched_vertices).end_object();
       json.key("seconds").begin_object().field("segmentation", report.seconds_segmentation)
           .field("flattening", report.seconds_flattening).field("meshing_and_pull_back", report.seconds_meshing_stage)
           .field("gluing", report.seconds_gluing).field("ricci_flow_thread_seconds", report.seconds_ricci_flow)

@@ -109,9 +109,26 @@ foreach(case IN ITEMS
   conformal_remeshing_add_program_test(mesh_report_hostile_${file} PROGRAM mesh_report ARGS ${hostile}/${file}
     EXIT 1 OUTPUT "invalid input '[^']*${file}': ${reason}")
 endforeach()
-# The remesher refuses polygons and accepts the smallest boundary (a single triangle above).
-conformal_remeshing_add_program_test(remesh_conformal_refuses_polygons PROGRAM remesh_conformal_tool
-  ARGS ${hostile}/quad_and_triangle.ply|${verify_dir}/quad.off|--quiet EXIT 1 OUTPUT "invalid input '[^']*': 1 non-triangle face")
+# The remesher triangulates polygons first and says so (--no-repair refuses them), and accepts
+# the smallest boundary (a single triangle above).
+conformal_remeshing_add_program_test(remesh_conformal_refuses_polygons_without_repair PROGRAM remesh_conformal_tool
+  ARGS ${hostile}/quad_and_triangle.ply|${verify_dir}/quad.off|--quiet|--no-repair
+  EXIT 1 OUTPUT "invalid input '[^']*': 1 non-triangle face")
+conformal_remeshing_add_program_test(remesh_conformal_triangulates_polygons PROGRAM remesh_conformal_tool
+  ARGS ${hostile}/quad_and_triangle.ply|${verify_dir}/quad.off|--report|${verify_dir}/quad.json
+  EXIT 0 OUTPUT "repaired the input: 1 polygon triangulated into 2 triangles"
+  JSON ${verify_dir}/quad.json
+  CHECKS "parameters.repair:STREQUAL:ON|input_repairs.triangulated_polygons:EQUAL:1|input_repairs.triangles_from_polygons:EQUAL:2|input_quality.faces:EQUAL:3|fidelity.relative_hausdorff:LESS:0.01")
+# User patches name the file's faces: a quad cube's six quads in three patches (its triangles
+# take their quad's patch); one id per triangle is refused.
+conformal_remeshing_add_program_test(remesh_conformal_patches_of_polygons PROGRAM remesh_conformal_tool
+  ARGS ${data}/non_triangle_cube.off|${verify_dir}/cube.off|--patches|${data}/non_triangle_cube_patches.txt|--relative-edge-length|0.1|--report|${verify_dir}/cube.json
+  EXIT 0 OUTPUT "6 polygons triangulated into 12 triangles"
+  JSON ${verify_dir}/cube.json
+  CHECKS "input_repairs.triangulated_polygons:EQUAL:6|input_quality.faces:EQUAL:12|output_quality.minimum_angle.min:GREATER:25|fidelity.relative_hausdorff:LESS:0.01")
+conformal_remeshing_add_program_test(remesh_conformal_patches_name_file_faces PROGRAM remesh_conformal_tool
+  ARGS ${data}/non_triangle_cube.off|${verify_dir}/cube.off|--patches|${data}/twelve_patch_ids.txt|--quiet
+  EXIT 2 OUTPUT "expected 6 non-negative integer patch ids \\(one per face\\), found 12")
 
 # --- time limit: exit code 3, a clear message, and no output file (not even a partial one) ------
 # 1 us runs out while reading; 0.5 s runs out inside the remesher (or, on a loaded machine,

@@ -5,6 +5,8 @@
 #include <CGAL/Conformal_remeshing/mesh_quality.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/measure.h>
+#include <CGAL/Polygon_mesh_processing/orientation.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Surface_mesh.h>
@@ -322,6 +324,132 @@ TEST(Readers, DefectiveSoupIsReportedNotBuilt)
   EXPECT_EQ(r.count(CR::Mesh_defect::NON_MANIFOLD_EDGE), 1u) << r.summary();
   EXPECT_FALSE(r.topology_available);
   EXPECT_EQ(mesh.number_of_faces(), 0u);
+}
+
+// --- repairs (Input_repairs) ------------------------------------------------------------------
+
+namespace {
+// A file read with every repair: the mesh, what was repaired, and the checks after.
+struct Repaired_read
+{
+  Mesh mesh;
+  CR::Input_repair_report repaired;
+  CR::Mesh_check_report checks;
+};
+
+Repaired_read read_repaired(const std::filesystem::path& file)
+{
+  Repaired_read r;
+  r.checks = CR::read_and_check_mesh(file.string(), r.mesh, CR::Input_repairs::all(), r.repaired);
+  return r;
+}
+
+std::filesystem::path test_data(const std::string& name) { return std::filesystem::path(CONFORMAL_REMESHING_TEST_DATA) / name; }
+} // namespace
+
+TEST(InputRepairs, QuadCubeIsTriangulatedWithTheSameSurface)
+{
+  const Repaired_read r = read_repaired(test_data("non_triangle_cube.off"));
+  ASSERT_TRUE(r.checks.is_valid()) << r.checks.summary();
+  EXPECT_EQ(r.repaired.file_faces, 6u);
+  EXPECT_EQ(r.repaired.triangulated_polygons, 6u);
+  EXPECT_EQ(r.repaired.triangles_from_polygons, 12u);
+  EXPECT_EQ(r.repaired.summary(), "6 polygons triangulated into 12 triangles");
+  ASSERT_EQ(r.mesh.number_of_faces(), 12u);
+  EXPECT_EQ(r.mesh.number_of_vertices(), 8u); // no vertex added
+  EXPECT_TRUE(CGAL::is_closed(r.mesh));
+  EXPECT_EQ(r.checks.components.at(0).genus, 0);
+  // The same surface: the unit cube's area and volume, outward like the file's quads.
+  EXPECT_NEAR(CGAL::Polygon_mesh_processing::area(r.mesh), 6., 1e-12);
+  EXPECT_NEAR(CGAL::Polygon_mesh_processing::volume(r.mesh), 1., 1e-12);
+  EXPECT_TRUE(CGAL::Polygon_mesh_processing::is_outward_oriented(r.mesh));
+  // Each quad became two triangles, and each triangle says which quad it is part of.
+  ASSERT_EQ(r.repaired.file_face.size(), 12u);
+  std::vector<int> triangles_of(6, 0);
+  for(std::size_t f : r.repaired.file_face)
+    ++triangles_of.at(f);
+  EXPECT_EQ(triangles_of, std::vector<int>(6, 2));
+  // Without the repair, the same file is refused.
+  Mesh strict;
+  EXPECT_EQ(CR::read_and_check_mesh(test_data("non_triangle_cube.off").string(), strict).count(CR::Mesh_defect::NON_TRIANGLE_FACE),
+            6u);
+}
+
+TEST(InputRepairs, InconsistentFacesTakeTheOrientationOfMostOfTheirComponent)
+{
+  // The tetrahedron of `inconsistent_orientation.off` has one face flipped: that face is
+  // reoriented, not the three others.
+  const Repaired_read one = read_repaired(test_data("inconsistent_orientation.off"));
+  ASSERT_TRUE(one.checks.is_valid()) << one.checks.summary();
+  EXPECT_EQ(one.repaired.reoriented_faces, 1u);
+  EXPECT_EQ(one.repaired.summary(), "1 face reoriented");
+  EXPECT_TRUE(CGAL::is_closed(one.mesh));
+  EXPECT_TRUE(CGAL::Polygon_mesh_processing::is_outward_oriented(one.mesh));
+
+  // Three of four faces flipped: the whole component follows the three.
+  Polygons faces = tetrahedron_faces();
+  for(std::size_t f : {0, 1, 2})
+    std::reverse(faces[f].begin(), faces[f].end());
+  const std::filesystem::path file = scratch_dir() / "mostly_inward.off";
+  ASSERT_TRUE(CGAL::IO::write_polygon_soup(file.string(), tetrahedron_points(), faces));
+  const Repaired_read three = read_repaired(file);
+  ASSERT_TRUE(three.checks.is_valid()) << three.checks.summary();
+  EXPECT_EQ(three.repaired.reoriented_faces, 1u);
+  EXPECT_FALSE(CGAL::Polygon_mesh_processing::is_outward_oriented(three.mesh));
+}
+
+TEST(InputRepairs, IsolatedVertexIsRemoved)
+{
+  const Repaired_read r = read_repaired(test_data("isolated_vertex.off"));
+  ASSERT_TRUE(r.checks.is_valid()) << r.checks.summary();
+  EXPECT_EQ(r.repaired.removed_isolated_vertices, 1u);
+  EXPECT_EQ(r.mesh.number_of_vertices(), 4u);
+  EXPECT_EQ(r.mesh.number_of_faces(), 4u);
+}
+
+TEST(InputRepairs, BordersAlongTheSamePointsAreStitched)
+{
+  // A square in two triangles whose diagonal's vertices are written twice: a crack, stitched.
+  const std::filesystem::path crack = scratch_dir() / "square_crack.off";
+  write_text(crack, "OFF\n6 2 0\n0 0 0\n1 0 0\n1 1 0\n0 0 0\n1 1 0\n0 1 0\n3 0 1 2\n3 3 4 5\n");
+  const Repaired_read stitched = read_repaired(crack);
+  ASSERT_TRUE(stitched.checks.is_valid()) << stitched.checks.summary();
+  EXPECT_EQ(stitched.repaired.stitched_vertices, 2u);
+  EXPECT_EQ(stitched.repaired.summary(), "2 vertices stitched along borders");
+  EXPECT_EQ(stitched.mesh.number_of_vertices(), 4u);
+  EXPECT_EQ(stitched.checks.total_boundary_loops(), 1u);
+  EXPECT_EQ(stitched.repaired.file_face, (std::vector<std::size_t>{0, 1}));
+
+  // Two triangles that touch at one point written twice: no border edge to join, so the
+  // duplicated vertex is still reported (merging it would pinch two sheets together).
+  const std::filesystem::path pinch = scratch_dir() / "touching_triangles.off";
+  write_text(pinch, "OFF\n6 2 0\n0 0 0\n1 0 0\n0 1 0\n0 0 0\n-1 0 0\n0 -1 0\n3 0 1 2\n3 3 4 5\n");
+  const Repaired_read touching = read_repaired(pinch);
+  EXPECT_EQ(touching.repaired.stitched_vertices, 0u);
+  EXPECT_EQ(touching.checks.count(CR::Mesh_defect::DUPLICATED_VERTEX), 1u) << touching.checks.summary();
+}
+
+TEST(InputRepairs, WhatCannotBeRepairedIsStillReported)
+{
+  // A Moebius strip cannot be oriented without cutting it: it stays as it is, refused.
+  const Repaired_read moebius = read_repaired(test_data("moebius.off"));
+  EXPECT_EQ(moebius.checks.count(CR::Mesh_defect::NON_ORIENTABLE), 1u) << moebius.checks.summary();
+  EXPECT_FALSE(moebius.repaired.any()) << moebius.repaired.summary();
+  EXPECT_EQ(moebius.repaired.summary(), "nothing repaired");
+  // A non-manifold edge is not repaired either.
+  const Repaired_read fin = read_repaired(test_data("non_manifold_edge.off"));
+  EXPECT_GT(fin.checks.count(CR::Mesh_defect::NON_MANIFOLD_EDGE), 0u) << fin.checks.summary();
+  EXPECT_EQ(fin.repaired.reoriented_faces, 0u);
+
+  // Polygons CGAL's triangulation cannot cut are left as they are: one with a corner at NaN,
+  // one whose corners are collinear, one that visits a vertex twice; a good square is cut.
+  const std::filesystem::path file = scratch_dir() / "uncuttable_polygons.off";
+  write_text(file, "OFF\n9 4 0\n0 0 0\n1 0 0\n1 1 0\nnan 1 0\n2 0 0\n3 0 0\n4 0 0\n0 -1 0\n1 -1 0\n"
+                   "4 0 1 2 3\n4 1 4 5 6\n5 0 1 8 1 7\n4 0 7 8 1\n");
+  const Repaired_read polygons = read_repaired(file);
+  EXPECT_EQ(polygons.repaired.triangulated_polygons, 1u) << polygons.repaired.summary();
+  EXPECT_EQ(polygons.checks.count(CR::Mesh_defect::NON_TRIANGLE_FACE), 3u) << polygons.checks.summary();
+  EXPECT_EQ(polygons.repaired.file_face, (std::vector<std::size_t>{0, 1, 2, 3, 3}));
 }
 
 namespace {

@@ -14,7 +14,11 @@
 #include <CGAL/IO/polygon_soup_io.h>
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Polygon_mesh_processing/orient_polygon_soup.h>
+#include <CGAL/Polygon_mesh_processing/polygon_mesh_to_polygon_soup.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/stitch_borders.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
+#include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
 #include <array>
@@ -28,6 +32,8 @@
 #include <iterator>
 #include <limits>
 #include <map>
+#include <numeric>
+#include <sstream>
 #include <string>
 #include <string_view>
 #include <system_error>
@@ -36,6 +42,83 @@
 
 namespace CGAL {
 namespace Conformal_remeshing {
+
+/// \ingroup PkgConformalRemeshingIO
+/// Input defects that `read_and_check_mesh()` repairs before it checks what the file holds. None
+/// by default: the checks then see the file as it is. Each repair is one that CGAL's own soup
+/// processing makes without changing the surface; what it cannot repair is left for the checks
+/// to report.
+struct Input_repairs
+{
+  /// Faces of more than three vertices cut into triangles by CGAL's `triangulate_face()` (a
+  /// constrained Delaunay triangulation in the polygon's plane); a polygon it cannot cut (one
+  /// that visits a vertex twice, say) is left as it is.
+  bool triangulate_polygons = false;
+  /// Faces flipped so that each connected component is consistently oriented, by CGAL's
+  /// `orient_polygon_soup()`, keeping the orientation of most of the component's faces; only
+  /// when every component is orientable and edge-manifold (nothing to cut apart).
+  bool orient_faces = false;
+  /// Vertices of no face removed.
+  bool remove_isolated_vertices = false;
+  /// Border edges that run between the same two points, the opposite ways, joined into one edge
+  /// by CGAL's `stitch_borders()` (a surface written as pieces whose seams repeat the vertices);
+  /// duplicated vertices that are not on such edges stay, and are reported.
+  bool stitch_borders = false;
+
+  /// every repair
+  static Input_repairs all() { return Input_repairs{true, true, true, true}; }
+  bool any() const { return triangulate_polygons || orient_faces || remove_isolated_vertices || stitch_borders; }
+};
+
+/// \ingroup PkgConformalRemeshingIO
+/// What `read_and_check_mesh()` repaired (see `Input_repairs`).
+struct Input_repair_report
+{
+  std::size_t file_faces = 0;            ///< faces in the file
+  std::size_t triangulated_polygons = 0; ///< faces of more than three vertices cut into triangles
+  std::size_t triangles_from_polygons = 0;
+  std::size_t reoriented_faces = 0;
+  std::size_t removed_isolated_vertices = 0;
+  std::size_t stitched_vertices = 0; ///< vertices merged into others by the stitching of borders
+  /// for each face of the mesh read, the index of the file's face it is part of (the identity
+  /// when no polygon was triangulated), e.g. to carry per-face data of the file over
+  std::vector<std::size_t> file_face;
+
+  bool any() const
+  {
+    return triangulated_polygons > 0 || reoriented_faces > 0 || removed_isolated_vertices > 0 || stitched_vertices > 0;
+  }
+
+  /// One line, e.g. "23 polygons triangulated into 46 triangles; 9 faces reoriented" ("nothing
+  /// repaired" when nothing was).
+  std::string summary() const
+  {
+    std::ostringstream out;
+    const char* separator = "";
+    auto plural = [](std::size_t n, const char* one, const char* many) { return n == 1 ? one : many; };
+    if(triangulated_polygons > 0)
+    {
+      out << triangulated_polygons << plural(triangulated_polygons, " polygon", " polygons") << " triangulated into "
+          << triangles_from_polygons << " triangles";
+      separator = "; ";
+    }
+    if(reoriented_faces > 0)
+    {
+      out << separator << reoriented_faces << plural(reoriented_faces, " face", " faces") << " reoriented";
+      separator = "; ";
+    }
+    if(removed_isolated_vertices > 0)
+    {
+      out << separator << removed_isolated_vertices << plural(removed_isolated_vertices, " isolated vertex", " isolated vertices")
+          << " removed";
+      separator = "; ";
+    }
+    if(stitched_vertices > 0)
+      out << separator << stitched_vertices << plural(stitched_vertices, " vertex", " vertices") << " stitched along borders";
+    return any() ? out.str() : std::string("nothing repaired");
+  }
+};
+
 namespace internal {
 
 // Reads `filename` if it is a binary STL file (its size matches the triangle count of its
@@ -520,6 +603,213 @@ bool read_PLY(const std::string& text, std::vector<Point>& points, std::vector<s
   return true;
 }
 
+// --- repairs (see `Input_repairs`) -----------------------------------------------------------------
+
+inline void remove_isolated_points(std::vector<std::vector<std::size_t> >& polygons, std::vector<std::size_t>& new_index,
+                                   std::size_t number_of_points, std::size_t& removed)
+{
+  new_index.assign(number_of_points, std::size_t(-1));
+  for(const std::vector<std::size_t>& polygon : polygons)
+    for(std::size_t v : polygon)
+      new_index[v] = 0;
+  std::size_t next = 0;
+  for(std::size_t& index : new_index)
+    if(index == 0)
+      index = next++;
+  removed = number_of_points - next;
+  for(std::vector<std::size_t>& polygon : polygons)
+    for(std::size_t& v : polygon)
+      v = new_index[v];
+}
+
+// Whether two faces run along an edge the same way: an inconsistent orientation, or a
+// non-manifold edge (which orienting cannot repair).
+inline bool has_repeated_directed_edge(const std::vector<std::vector<std::size_t> >& polygons)
+{
+  std::vector<std::pair<std::size_t, std::size_t> > directed;
+  for(const std::vector<std::size_t>& polygon : polygons)
+    for(std::size_t i = 0; i < polygon.size(); ++i)
+      directed.emplace_back(polygon[i], polygon[(i + 1) % polygon.size()]);
+  std::sort(directed.begin(), directed.end());
+  return std::adjacent_find(directed.begin(), directed.end()) != directed.end();
+}
+
+// CGAL's orient_polygon_soup() keeps the orientation of the first face it meets in each
+// component; here each component then keeps the orientation of most of its faces (a closed
+// surface stays outward when most of the file's faces were). `flipped` counts the faces
+// reversed; false, with `polygons` unchanged, when the soup would have to be cut apart to be
+// oriented (a non-manifold edge or vertex, a non-orientable component).
+template <typename Point>
+bool orient_faces(const std::vector<Point>& points, std::vector<std::vector<std::size_t> >& polygons, std::size_t& flipped)
+{
+  std::vector<Point> oriented_points(points);
+  std::vector<std::vector<std::size_t> > oriented(polygons);
+  if(!Polygon_mesh_processing::orient_polygon_soup(oriented_points, oriented) || oriented_points.size() != points.size())
+    return false;
+  // The components: faces joined across their edges (union-find on the faces).
+  std::vector<std::size_t> parent(polygons.size());
+  std::iota(parent.begin(), parent.end(), std::size_t(0));
+  auto root = [&](std::size_t f) {
+    while(parent[f] != f)
+      f = parent[f] = parent[parent[f]];
+    return f;
+  };
+  std::map<std::pair<std::size_t, std::size_t>, std::size_t> face_at_edge;
+  for(std::size_t f = 0; f < polygons.size(); ++f)
+    for(std::size_t i = 0; i < polygons[f].size(); ++i)
+    {
+      const std::size_t a = polygons[f][i], b = polygons[f][(i + 1) % polygons[f].size()];
+      const auto inserted = face_at_edge.emplace(std::minmax(a, b), f);
+      if(!inserted.second)
+        parent[root(f)] = root(inserted.first->second);
+    }
+  std::vector<std::ptrdiff_t> balance(polygons.size(), 0); // per root: faces flipped minus faces kept
+  for(std::size_t f = 0; f < polygons.size(); ++f)
+    balance[root(f)] += oriented[f] != polygons[f] ? 1 : -1;
+  flipped = 0;
+  for(std::size_t f = 0; f < polygons.size(); ++f)
+  {
+    const bool reverse_component = balance[root(f)] > 0;
+    if(reverse_component)
+      std::reverse(oriented[f].begin(), oriented[f].end());
+    if(oriented[f] != polygons[f])
+      ++flipped;
+  }
+  polygons = std::move(oriented);
+  return true;
+}
+
+// Whether CGAL's triangulate_face() can cut `polygon`: distinct, finite corners, and a plane
+// (a nonzero Newell normal; its triangulation is projected along that normal).
+template <typename Point>
+bool is_cuttable_polygon(const std::vector<Point>& points, const std::vector<std::size_t>& polygon)
+{
+  std::vector<std::size_t> sorted(polygon);
+  std::sort(sorted.begin(), sorted.end());
+  if(std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
+    return false;
+  double normal[3] = {0., 0., 0.};
+  for(std::size_t i = 0; i < polygon.size(); ++i)
+  {
+    const Point& p = points[polygon[i]];
+    const Point& q = points[polygon[(i + 1) % polygon.size()]];
+    const double px = CGAL::to_double(p.x()), py = CGAL::to_double(p.y()), pz = CGAL::to_double(p.z());
+    const double qx = CGAL::to_double(q.x()), qy = CGAL::to_double(q.y()), qz = CGAL::to_double(q.z());
+    if(!(std::isfinite(px) && std::isfinite(py) && std::isfinite(pz)))
+      return false;
+    normal[0] += (py - qy) * (pz + qz);
+    normal[1] += (pz - qz) * (px + qx);
+    normal[2] += (px - qx) * (py + qy);
+  }
+  const double length = std::sqrt(normal[0] * normal[0] + normal[1] * normal[1] + normal[2] * normal[2]);
+  return std::isfinite(length) && length > 0.;
+}
+
+// Each face of more than three vertices cut into triangles by CGAL's triangulate_face(), on a
+// mesh of that face alone (so that the rest of the soup need not be a valid mesh); its triangles
+// keep its orientation. A polygon that cannot be cut is left for the checks to report.
+template <typename Point>
+void triangulate_polygons(const std::vector<Point>& points, std::vector<std::vector<std::size_t> >& polygons,
+                          Input_repair_report& report)
+{
+  typedef CGAL::Surface_mesh<Point> Face_mesh;
+  std::vector<std::vector<std::size_t> > triangles;
+  std::vector<std::size_t> file_face;
+  triangles.reserve(polygons.size());
+  for(std::size_t f = 0; f < polygons.size(); ++f)
+  {
+    const std::vector<std::size_t>& polygon = polygons[f];
+    bool cut = false;
+    if(polygon.size() > 3 && is_cuttable_polygon(points, polygon))
+    {
+      Face_mesh face_mesh;
+      std::vector<typename Face_mesh::Vertex_index> corners;
+      for(std::size_t v : polygon)
+        corners.push_back(face_mesh.add_vertex(points[v]));
+      const typename Face_mesh::Face_index face = face_mesh.add_face(corners);
+      if(face != Face_mesh::null_face() && Polygon_mesh_processing::triangulate_face(face, face_mesh))
+      {
+        const std::size_t before = triangles.size();
+        for(typename Face_mesh::Face_index t : face_mesh.faces())
+        {
+          std::vector<std::size_t> triangle;
+          for(typename Face_mesh::Vertex_index v : CGAL::vertices_around_face(face_mesh.halfedge(t), face_mesh))
+            triangle.push_back(polygon[v.idx()]);
+          triangles.push_back(std::move(triangle));
+        }
+        cut = triangles.size() > before;
+        if(cut)
+        {
+          ++report.triangulated_polygons;
+          report.triangles_from_polygons += triangles.size() - before;
+          file_face.resize(triangles.size(), report.file_face[f]);
+        }
+      }
+    }
+    if(!cut)
+    {
+      triangles.push_back(polygon);
+      file_face.push_back(report.file_face[f]);
+    }
+  }
+  polygons = std::move(triangles);
+  report.file_face = std::move(file_face);
+}
+
+// Border edges joined by CGAL's stitch_borders(), on the mesh of the soup when it is one, with
+// finite coordinates (the stitching sorts the points) and no isolated vertex (the mesh would drop
+// it unsaid); the faces keep their order.
+template <typename Point>
+void stitch_borders(std::vector<Point>& points, std::vector<std::vector<std::size_t> >& polygons, std::size_t& stitched)
+{
+  stitched = 0;
+  const bool finite = std::all_of(points.begin(), points.end(), [](const Point& p) {
+    return std::isfinite(CGAL::to_double(p.x())) && std::isfinite(CGAL::to_double(p.y())) && std::isfinite(CGAL::to_double(p.z()));
+  });
+  if(!finite || polygons.empty() || !Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons))
+    return;
+  CGAL::Surface_mesh<Point> mesh;
+  Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, mesh);
+  const std::size_t vertices = mesh.number_of_vertices();
+  if(vertices != points.size() || mesh.number_of_faces() != polygons.size()
+     || Polygon_mesh_processing::stitch_borders(mesh) == 0)
+    return;
+  stitched = vertices - mesh.number_of_vertices();
+  mesh.collect_garbage();
+  points.clear();
+  polygons.clear();
+  Polygon_mesh_processing::polygon_mesh_to_polygon_soup(mesh, points, polygons);
+}
+
+template <typename Point>
+void repair_polygon_soup(std::vector<Point>& points, std::vector<std::vector<std::size_t> >& polygons,
+                         const Input_repairs& repairs, Input_repair_report& report)
+{
+  report = Input_repair_report();
+  report.file_faces = polygons.size();
+  report.file_face.resize(polygons.size());
+  std::iota(report.file_face.begin(), report.file_face.end(), std::size_t(0));
+  if(repairs.remove_isolated_vertices)
+  {
+    std::vector<std::size_t> new_index;
+    remove_isolated_points(polygons, new_index, points.size(), report.removed_isolated_vertices);
+    if(report.removed_isolated_vertices > 0)
+    {
+      std::vector<Point> used(points.size() - report.removed_isolated_vertices);
+      for(std::size_t v = 0; v < points.size(); ++v)
+        if(new_index[v] != std::size_t(-1))
+          used[new_index[v]] = points[v];
+      points = std::move(used);
+    }
+  }
+  if(repairs.orient_faces && has_repeated_directed_edge(polygons))
+    orient_faces(points, polygons, report.reoriented_faces);
+  if(repairs.stitch_borders)
+    stitch_borders(points, polygons, report.stitched_vertices);
+  if(repairs.triangulate_polygons)
+    triangulate_polygons(points, polygons, report);
+}
+
 } // namespace internal
 
 /// \ingroup PkgConformalRemeshingIO
@@ -547,6 +837,18 @@ bool read_PLY(const std::string& text, std::vector<Point>& points, std::vector<s
 ///         names the file and the reason.
 template <typename PolygonMesh>
 Mesh_check_report read_and_check_mesh(const std::string& filename, PolygonMesh& mesh)
+{
+  Input_repair_report repaired;
+  return read_and_check_mesh(filename, mesh, Input_repairs(), repaired);
+}
+
+/// \ingroup PkgConformalRemeshingIO
+/// The same, with the defects named by `repairs` repaired first (see `Input_repairs`): the
+/// checks and `mesh` are then those of the repaired surface, and `repaired` says what changed.
+/// The `remesh_conformal` tool reads its input this way with every repair, unless told not to.
+template <typename PolygonMesh>
+Mesh_check_report read_and_check_mesh(const std::string& filename, PolygonMesh& mesh, const Input_repairs& repairs,
+                                      Input_repair_report& repaired)
 {
   typedef typename boost::property_map<PolygonMesh, CGAL::vertex_point_t>::type Vertex_point_map;
   typedef typename boost::property_traits<Vertex_point_map>::value_type Point;
@@ -605,6 +907,7 @@ Mesh_check_report read_and_check_mesh(const std::string& filename, PolygonMesh& 
                 "cannot read '" + filename + "': not a valid " + extension + " file (" + problem + ")");
   }
 
+  internal::repair_polygon_soup(points, polygons, repairs, repaired);
   Mesh_check_report report = check_polygon_soup<Kernel>(points, polygons);
 
   clear(mesh);
