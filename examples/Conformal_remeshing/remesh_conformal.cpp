@@ -56,7 +56,8 @@ const char* usage =
   "  --relative-edge-length R  target edge length as a fraction of the bounding-box diagonal (default 0.01)\n"
   "  --min-angle DEG         smallest angle the optimization on the surface keeps (default 28;\n"
   "                          the planar Delaunay refinement uses at most 20.7)\n"
-  "  --features-angle DEG    edges with a dihedral angle above DEG are sharp features (default 60; 0: none)\n"
+  "  --features-angle DEG    edges with a dihedral angle above DEG are sharp features (default 60, and none if a\n"
+  "                          patch cannot be flattened with them; given, they are kept or the tool fails; 0: none)\n"
   "  --patches FILE          user patches: one integer patch id per face of IN, in face order\n"
   "  --cut-plane a,b,c,d     cut the surface by the plane ax+by+cz+d=0 first (repeatable)\n"
   "  --save-patches DIR      DIR/patch_N.off and DIR/patch_N_flattening.svg for every patch (DIR is created)\n"
@@ -84,6 +85,7 @@ struct Options
   int optimization_rounds = 5, lloyd_iterations = 0;
   std::vector<K::Plane_3> planes;
   bool quiet = false, sequential = false, repair = true;
+  bool features_angle_given = false; // then no fallback without features (CR::parameters::features_fallback)
 };
 
 bool parse_plane(const std::string& text, std::vector<K::Plane_3>& planes)
@@ -136,7 +138,7 @@ bool parse(int argc, char** argv, Options& o)
     else if(arg == "--min-angle")
       ok = number(o.min_angle);
     else if(arg == "--features-angle")
-      ok = number(o.features_angle);
+      ok = o.features_angle_given = number(o.features_angle);
     else if(arg == "--patches" && i + 1 < argc)
       o.patches = argv[++i];
     else if(arg == "--cut-plane" && i + 1 < argc)
@@ -275,7 +277,8 @@ int main(int argc, char** argv)
     target, CR::parameters::minimum_angle(
               o.min_angle, CR::parameters::features_angle(
                              o.features_angle, CR::parameters::cut_planes(
-                                                 o.planes, CR::parameters::progress(progress, CGAL::parameters::face_patch_map(patch_of)))))))));
+                                                 o.planes, CR::parameters::features_fallback(
+                                                             !o.features_angle_given, CR::parameters::progress(progress, CGAL::parameters::face_patch_map(patch_of))))))))));
 
   if(!o.save_patches.empty())
   {
@@ -363,6 +366,7 @@ int main(int argc, char** argv)
         [&](const char* name, double CR::Meshing_phase_seconds::*phase) { json.field(name, report.meshing_phases.*phase); });
       json.end_object().end_object();
       json.key("segmentation").begin_object().field("patches", report.number_of_patches)
+          .field("features_dropped", report.features_dropped).field("features_fallback_reason", report.features_fallback_reason)
           .field("plane_cuts", report.plane_cuts).field("patch_bisections", report.patch_bisections)
           .field("feature_edges", report.feature_edges).field("dangling_feature_edges", report.dangling_feature_edges)
           .field("boundary_curves", report.boundary_curves).field("refined_boundary_curves", report.refined_boundary_curves)
@@ -405,7 +409,8 @@ int main(int argc, char** argv)
             << fidelity.relative_distance_from_reference << " x diagonal; self-intersections: "
             << (fidelity.self_intersects ? "YES" : "none") << "\n"
             << "  " << report.number_of_patches << " patches (" << report.plane_cuts << " plane cuts, "
-            << report.feature_edges << " feature edges); seconds: segmentation " << report.seconds_segmentation
+            << report.feature_edges << " feature edges" << (report.features_dropped ? ", dropped: no flattening with them" : "")
+            << "); seconds: segmentation " << report.seconds_segmentation
             << ", flattening " << report.seconds_flattening << ", meshing and pull-back " << report.seconds_meshing_stage
             << ", gluing " << report.seconds_gluing << "\n";
   return 0;

@@ -52,7 +52,7 @@
 // `relative_target_edge_length(r)` (default 0.01 of the bounding-box diagonal),
 // `minimum_angle(degrees)` (default 28), `corner_angle(degrees)` (default 30),
 // `smoothing_iterations(n)` (default 1), `lloyd_iterations(n)` (default 0),
-// `optimization_rounds(n)` (default 5),
+// `optimization_rounds(n)` (default 5), `features_fallback(b)` (default true),
 // `maximum_scale_ratio(r)` (default 1000) and `progress(callable)` (the last two declared in
 // flatten_poly_annuli.h).
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(target_edge_length)
@@ -64,6 +64,7 @@ CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(lloyd_iterations)
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(optimization_rounds)
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(sizing_field)
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(maximum_chord_error)
+CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(features_fallback)
 
 namespace CGAL {
 namespace Conformal_remeshing {
@@ -126,6 +127,10 @@ struct Remeshing_report
   std::size_t feature_edges = 0;    ///< sharp edges of the refined input
   /// feature edges inside a patch rather than between two (the patch is slit open along them)
   std::size_t dangling_feature_edges = 0;
+  /// the sharp features were dropped because a patch could not be flattened with them (see the
+  /// named parameter `features_fallback`); `features_fallback_reason` says why
+  bool features_dropped = false;
+  std::string features_fallback_reason;
   std::vector<Flattening_report> patches; ///< the flattening of each patch
   int max_newton_iterations = 0;
   double max_curvature_error = 0.;
@@ -926,6 +931,10 @@ Meshed_patches mesh_patches_on_shared_samples(const Poly_annulus_segmentation& s
 ///     \cgalParamDescription{rounds of edge flips toward valence 6 and vertex smoothing after the refinement, judged by the triangles' shapes on the surface; after them, inner edges longer than 1.26 times the target, and those across bends (whose chord's midpoint stands more than 0.15 times the target off the surface), are split and two more rounds run, then up to two more splits of the same kinds with a round each; no round lowers the smallest angle below the `minimum_angle` bound or stretches an edge past 1.4 times the target (1.26 after the splits) (`Conformal_remeshing::parameters::optimization_rounds()`)}
 ///     \cgalParamDefault{5}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{features_fallback}
+///     \cgalParamDescription{when a patch cannot be flattened even after bisection, and the segmentation has sharp features, segment again without them (and say so in `Remeshing_report::features_dropped`), rather than fail (`Conformal_remeshing::parameters::features_fallback()`). On scans and other organic surfaces the features angle takes noise for sharp edges, which cut the surface into thin strips no conformal map flattens with a bounded scale; on CAD parts no patch needs it.}
+///     \cgalParamDefault{true}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{maximum_scale_ratio}
 ///     \cgalParamDescription{a patch whose largest local scale exceeds its smallest by more than this is bisected (`Conformal_remeshing::parameters::maximum_scale_ratio()`)}
 ///     \cgalParamDefault{1000}
@@ -951,7 +960,8 @@ Meshed_patches mesh_patches_on_shared_samples(const Poly_annulus_segmentation& s
 /// \returns what happened, with times per stage
 /// \throws Error with `Error_code::INVALID_INPUT` when the input is not a valid, manifold,
 ///         orientable triangle mesh or a parameter is out of range, and with the flattening's
-///         code when a patch cannot be flattened even after bisection (the message says why);
+///         code when a patch cannot be flattened even after bisection, and without sharp
+///         features if `features_fallback` is on (the message says why);
 ///         with `Error_code::TIME_LIMIT_EXCEEDED` past the `maximum_running_time`; with
 ///         `Error_code::NOT_AN_EMBEDDING` when the remeshed surface would intersect itself where
 ///         the input does not (checked with exact predicates) even after those places were meshed
@@ -1018,21 +1028,41 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
     }
   }
 
-  // --- segmentation ---------------------------------------------------------------------------
-  progress("segmenting into poly-annuli");
-  Poly_annulus_segmentation segmentation;
-  segment_into_poly_annuli(input, segmentation, parameters::snap_distance(0.1 * h, np));
-  report.seconds_segmentation = seconds_since(start);
-  time_limit.check("after the segmentation");
-
-  // --- flattening, with bisection of the patches that fail or stretch too much ------------------
-  start = Clock::now();
-  Flattened_poly_annuli flattened;
+  // --- segmentation, and flattening with bisection of the patches that fail or stretch too much -
   // The flattening takes its own parameters from `np` (not the input's maps). The flow resolves
   // the map at twice the target, finer on tubes (see `internal::flow_edge_length()`).
-  internal::flatten_poly_annuli<ConcurrencyTag>(
-    segmentation, flattened, parameters::maximum_edge_length(2. * h, parameters::snap_distance(0.1 * h, np)),
-    time_limit, "remesh_conformal");
+  Poly_annulus_segmentation segmentation;
+  Flattened_poly_annuli flattened;
+  auto segment_and_flatten = [&](const auto& segmentation_parameters) {
+    start = Clock::now();
+    progress("segmenting into poly-annuli");
+    segment_into_poly_annuli(input, segmentation, segmentation_parameters);
+    report.seconds_segmentation += seconds_since(start);
+    time_limit.check("after the segmentation");
+    start = Clock::now();
+    internal::flatten_poly_annuli<ConcurrencyTag>(
+      segmentation, flattened, parameters::maximum_edge_length(2. * h, parameters::snap_distance(0.1 * h, np)),
+      time_limit, "remesh_conformal");
+    report.seconds_flattening += seconds_since(start);
+  };
+  try
+  {
+    segment_and_flatten(parameters::snap_distance(0.1 * h, np));
+  }
+  catch(const Error& e)
+  {
+    // Features taken from noise (see `features_fallback`) bound thin strips the bisections
+    // cannot flatten; without them, the patches are the surface's own.
+    if(e.code() == Error_code::TIME_LIMIT_EXCEEDED || segmentation.feature_edges == 0
+       || !choose_parameter(get_parameter(np, internal_np::features_fallback), true))
+      throw;
+    report.seconds_flattening += seconds_since(start);
+    report.features_dropped = true;
+    report.features_fallback_reason = e.what();
+    progress("no flattening with the " + std::to_string(segmentation.feature_edges) + " sharp feature edges (" + e.what()
+             + "): segmenting again without them");
+    segment_and_flatten(parameters::features_angle(0., parameters::snap_distance(0.1 * h, np)));
+  }
   const std::vector<Extracted_patch>& patches = flattened.patches;
   const std::vector<Conformal_flattening>& flattenings = flattened.flattenings;
   report.patch_bisections = flattened.bisections;
@@ -1051,7 +1081,6 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
     report.seconds_ricci_flow += r.seconds_flow;
     report.patches.push_back(r);
   }
-  report.seconds_flattening = seconds_since(start);
 
   // --- meshing and gluing, again with shorter edges where the output intersects itself --------
   // Where two parts of the surface come closer than the output's chords deviate from it (nearly

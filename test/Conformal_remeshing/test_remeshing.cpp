@@ -111,6 +111,34 @@ TEST(RemeshConformal, CgalBladeWithTinyCurvesAtTheEndsOfAThinStrip)
   check_remeshing(mesh, remeshing_checks::Quality_bars(15.).edge_share_above(0.93));
 }
 
+TEST(RemeshConformal, CgalDinoScanDropsTheFeaturesItsNoiseMakes)
+{
+  // A scan: at the default features angle its noise makes hundreds of sharp edges, which bound
+  // thin strips that no conformal map flattens with a bounded scale, even after 8 bisections.
+  // The remesher then segments it again without features (`features_fallback`): smallest angle
+  // 30 degrees, but 91% of the edges within [0.7, 1.4] times the target (47 patches, 36 of the
+  // cuts between them by planes; which edges fall outside is not analysed yet).
+  Mesh mesh;
+  ASSERT_TRUE(CR::read_and_check_mesh(std::string(CONFORMAL_REMESHING_CGAL_DATA) + "/meshes/dino.off", mesh).is_valid());
+  const CR::Remeshing_report report = check_remeshing(mesh, remeshing_checks::Quality_bars(25.).edge_share_above(0.9));
+  EXPECT_TRUE(report.features_dropped);
+  EXPECT_EQ(report.feature_edges, 0u);
+  EXPECT_NE(report.features_fallback_reason.find("cannot be flattened after 8 bisections"), std::string::npos)
+    << report.features_fallback_reason;
+  // Told to keep its features, the remesher fails as it did before, saying why.
+  Mesh output;
+  try
+  {
+    CR::remesh_conformal(mesh, output, CR::parameters::features_fallback(false));
+    ADD_FAILURE() << "no error without the fallback";
+  }
+  catch(const CR::Error& e)
+  {
+    EXPECT_EQ(e.code(), CR::Error_code::NOT_CONVERGED);
+    EXPECT_NE(std::string(e.what()).find("scale ratio"), std::string::npos) << e.what();
+  }
+}
+
 TEST(RemeshConformal, InPlaceEqualsSeparateOutput)
 {
   Mesh mesh;
