@@ -932,7 +932,7 @@ Meshed_patches mesh_patches_on_shared_samples(const Poly_annulus_segmentation& s
 ///     \cgalParamDefault{5}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{features_fallback}
-///     \cgalParamDescription{when a patch cannot be flattened even after bisection, and the segmentation has sharp features, segment again without them (and say so in `Remeshing_report::features_dropped`), rather than fail (`Conformal_remeshing::parameters::features_fallback()`). On scans and other organic surfaces the features angle takes noise for sharp edges, which cut the surface into thin strips no conformal map flattens with a bounded scale; on CAD parts no patch needs it.}
+///     \cgalParamDescription{when a patch cannot be flattened even after bisection, and the segmentation has sharp features, segment again without them (and say so in `Remeshing_report::features_dropped`), rather than fail (`Conformal_remeshing::parameters::features_fallback()`). On scans the features angle takes noise for sharp edges, which cut the surface into patches whose conformal scale varies by factors of 10^3 to 10^6 even after the bisections; none of CGAL's CAD parts needs it.}
 ///     \cgalParamDefault{true}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{maximum_scale_ratio}
@@ -1051,8 +1051,8 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
   }
   catch(const Error& e)
   {
-    // Features taken from noise (see `features_fallback`) bound thin strips the bisections
-    // cannot flatten; without them, the patches are the surface's own.
+    // Features taken from noise (see `features_fallback`) bound patches the bisections cannot
+    // flatten with a bounded scale; without them, the patches are the surface's own.
     if(e.code() == Error_code::TIME_LIMIT_EXCEEDED || segmentation.feature_edges == 0
        || !choose_parameter(get_parameter(np, internal_np::features_fallback), true))
       throw;

@@ -113,8 +113,8 @@ TEST(RemeshConformal, CgalBladeWithTinyCurvesAtTheEndsOfAThinStrip)
 
 TEST(RemeshConformal, CgalDinoScanDropsTheFeaturesItsNoiseMakes)
 {
-  // A scan: at the default features angle its noise makes hundreds of sharp edges, which bound
-  // thin strips that no conformal map flattens with a bounded scale, even after 8 bisections.
+  // A scan: at the default features angle its noise makes hundreds of sharp edges, between which
+  // a patch's conformal scale varies by a factor of 5522 even after 8 bisections.
   // The remesher then segments it again without features (`features_fallback`): smallest angle
   // 30 degrees, but 91% of the edges within [0.7, 1.4] times the target (47 patches, 36 of the
   // cuts between them by planes; which edges fall outside is not analysed yet).
