@@ -88,6 +88,14 @@ struct Options
   bool features_angle_given = false; // then no fallback without features (CR::parameters::features_fallback)
 };
 
+// A message for standard error: the library's errors name their function, which is the tool's
+// name too, and are not prefixed twice.
+std::string tool_message(const std::string& what)
+{
+  const std::string prefix = "remesh_conformal: ";
+  return what.compare(0, prefix.size(), prefix) == 0 ? what : prefix + what;
+}
+
 bool parse_plane(const std::string& text, std::vector<K::Plane_3>& planes)
 {
   std::istringstream in(text);
@@ -220,7 +228,7 @@ int main(int argc, char** argv)
   }
   catch(const std::exception& e)
   {
-    std::cerr << "remesh_conformal: " << e.what() << "\n";
+    std::cerr << tool_message(e.what()) << "\n";
     return 2;
   }
 
@@ -242,7 +250,7 @@ int main(int argc, char** argv)
   }
   catch(const std::exception& e)
   {
-    std::cerr << "remesh_conformal: " << e.what() << "\n";
+    std::cerr << tool_message(e.what()) << "\n";
     return 2;
   }
   if(!(remaining_time() > 0.))
@@ -307,12 +315,12 @@ int main(int argc, char** argv)
     {
       if(e.code() == CR::Error_code::TIME_LIMIT_EXCEEDED)
         return out_of_time(e.what());
-      std::cerr << "remesh_conformal: " << e.what() << "\n";
+      std::cerr << tool_message(e.what()) << "\n";
       return 1;
     }
     catch(const std::exception& e)
     {
-      std::cerr << "remesh_conformal: " << e.what() << "\n";
+      std::cerr << tool_message(e.what()) << "\n";
       return 2;
     }
   }
@@ -330,7 +338,7 @@ int main(int argc, char** argv)
   {
     if(e.code() == CR::Error_code::TIME_LIMIT_EXCEEDED)
       return out_of_time(e.what());
-    std::cerr << "remesh_conformal: " << e.what() << "\n";
+    std::cerr << tool_message(e.what()) << "\n";
     return 1;
   }
   progress("measuring quality and fidelity");
@@ -396,7 +404,7 @@ int main(int argc, char** argv)
   }
   catch(const std::exception& e)
   {
-    std::cerr << "remesh_conformal: " << e.what() << "\n";
+    std::cerr << tool_message(e.what()) << "\n";
     return 2;
   }
 

@@ -827,9 +827,24 @@ Meshed_patches mesh_patches_on_shared_samples(const Poly_annulus_segmentation& s
     resample = !curves_to_refine.empty();
     if(resample)
     {
-      const bool refinable = std::all_of(curves_to_refine.begin(), curves_to_refine.end(),
-                                         [&](std::size_t c) { return halvings[c] < max_halvings; });
-      if(!refinable)
+      auto refinable = [&](std::size_t c) { return halvings[c] < max_halvings; };
+      if(!std::all_of(curves_to_refine.begin(), curves_to_refine.end(), refinable))
+      {
+        // The chords that fail may not be the ones at fault: a coarse outer loop of a tiny
+        // annulus (4 chords on CGAL's femur) cut its hole off in the plane, and every chord of the
+        // hole failed however dense. The failing patches' other curves are sampled more densely
+        // then.
+        curves_to_refine.clear();
+        for(std::size_t p = 0; p < patches.size(); ++p)
+          if(!remeshed[p].chords_not_glued.empty())
+          {
+            const std::set<std::size_t> own(remeshed[p].boundary_ids.begin(), remeshed[p].boundary_ids.end());
+            for(const auto& chord : samples.curve_of_chord)
+              if(own.count(chord.first.first) && own.count(chord.first.second) && refinable(chord.second))
+                curves_to_refine.insert(chord.second);
+          }
+      }
+      if(curves_to_refine.empty())
         throw Error(Error_code::NOT_AN_EMBEDDING,
                     "remesh_conformal: patch " + std::to_string(first_failing) + ": its planar mesh does not glue to its neighbours at "
                       + std::to_string(remeshed[first_failing].chords_not_glued.size())
@@ -1059,8 +1074,11 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
     report.seconds_flattening += seconds_since(start);
     report.features_dropped = true;
     report.features_fallback_reason = e.what();
-    progress("no flattening with the " + std::to_string(segmentation.feature_edges) + " sharp feature edges (" + e.what()
-             + "): segmenting again without them");
+    const std::string caller = "remesh_conformal: "; // the start of the flattening's messages
+    if(report.features_fallback_reason.compare(0, caller.size(), caller) == 0)
+      report.features_fallback_reason.erase(0, caller.size());
+    progress("no flattening with the " + std::to_string(segmentation.feature_edges) + " sharp feature edges ("
+             + report.features_fallback_reason + "): segmenting again without them");
     segment_and_flatten(parameters::features_angle(0., parameters::snap_distance(0.1 * h, np)));
   }
   const std::vector<Extracted_patch>& patches = flattened.patches;
