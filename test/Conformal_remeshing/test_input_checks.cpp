@@ -450,6 +450,15 @@ TEST(InputRepairs, WhatCannotBeRepairedIsStillReported)
   EXPECT_EQ(polygons.repaired.triangulated_polygons, 1u) << polygons.repaired.summary();
   EXPECT_EQ(polygons.checks.count(CR::Mesh_defect::NON_TRIANGLE_FACE), 3u) << polygons.checks.summary();
   EXPECT_EQ(polygons.repaired.file_face, (std::vector<std::size_t>{0, 1, 2, 3, 3}));
+
+  // Inconsistent orientation beside a triangle with two equal corners: CGAL's orienter never
+  // returned on such a soup (found by fuzzing), so it is not oriented, and both are reported.
+  const std::filesystem::path twice = scratch_dir() / "corner_twice.off";
+  write_text(twice, "OFF\n4 3 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 1 2\n3 0 1 3\n3 2 2 3\n");
+  const Repaired_read corner_twice = read_repaired(twice);
+  EXPECT_EQ(corner_twice.repaired.reoriented_faces, 0u);
+  EXPECT_GT(corner_twice.checks.count(CR::Mesh_defect::INCONSISTENT_ORIENTATION), 0u) << corner_twice.checks.summary();
+  EXPECT_GT(corner_twice.checks.count(CR::Mesh_defect::DEGENERATE_FACE), 0u) << corner_twice.checks.summary();
 }
 
 namespace {

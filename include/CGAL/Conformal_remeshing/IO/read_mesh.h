@@ -634,6 +634,14 @@ inline bool has_repeated_directed_edge(const std::vector<std::vector<std::size_t
   return std::adjacent_find(directed.begin(), directed.end()) != directed.end();
 }
 
+// At least three corners, all different.
+inline bool has_distinct_corners(const std::vector<std::size_t>& polygon)
+{
+  std::vector<std::size_t> sorted(polygon);
+  std::sort(sorted.begin(), sorted.end());
+  return sorted.size() >= 3 && std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end();
+}
+
 // CGAL's orient_polygon_soup() keeps the orientation of the first face it meets in each
 // component; here each component then keeps the orientation of most of its faces (a closed
 // surface stays outward when most of the file's faces were). `flipped` counts the faces
@@ -642,6 +650,10 @@ inline bool has_repeated_directed_edge(const std::vector<std::vector<std::size_t
 template <typename Point>
 bool orient_faces(const std::vector<Point>& points, std::vector<std::vector<std::size_t> >& polygons, std::size_t& flipped)
 {
+  // CGAL's orient_polygon_soup() never returns on a polygon that visits a vertex twice (a
+  // fuzzed STL file whose triangle had two equal corners): such a soup is left to the checks.
+  if(!std::all_of(polygons.begin(), polygons.end(), has_distinct_corners))
+    return false;
   std::vector<Point> oriented_points(points);
   std::vector<std::vector<std::size_t> > oriented(polygons);
   if(!Polygon_mesh_processing::orient_polygon_soup(oriented_points, oriented) || oriented_points.size() != points.size())
@@ -684,9 +696,7 @@ bool orient_faces(const std::vector<Point>& points, std::vector<std::vector<std:
 template <typename Point>
 bool is_cuttable_polygon(const std::vector<Point>& points, const std::vector<std::size_t>& polygon)
 {
-  std::vector<std::size_t> sorted(polygon);
-  std::sort(sorted.begin(), sorted.end());
-  if(std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
+  if(!has_distinct_corners(polygon))
     return false;
   double normal[3] = {0., 0., 0.};
   for(std::size_t i = 0; i < polygon.size(); ++i)
