@@ -799,6 +799,12 @@ void repair_polygon_soup(std::vector<Point>& points, std::vector<std::vector<std
   report.file_faces = polygons.size();
   report.file_face.resize(polygons.size());
   std::iota(report.file_face.begin(), report.file_face.end(), std::size_t(0));
+  // A face that names a missing vertex is left to the checks, and so is the rest: no repair can
+  // read such a soup.
+  for(const std::vector<std::size_t>& polygon : polygons)
+    for(std::size_t v : polygon)
+      if(v >= points.size())
+        return;
   if(repairs.remove_isolated_vertices)
   {
     std::vector<std::size_t> new_index;
