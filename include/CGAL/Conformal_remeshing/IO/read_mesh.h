@@ -605,21 +605,28 @@ bool read_PLY(const std::string& text, std::vector<Point>& points, std::vector<s
 
 // --- repairs (see `Input_repairs`) -----------------------------------------------------------------
 
-inline void remove_isolated_points(std::vector<std::vector<std::size_t> >& polygons, std::vector<std::size_t>& new_index,
-                                   std::size_t number_of_points, std::size_t& removed)
+// The points of no face removed, the others renumbered in order; returns how many were removed.
+template <typename Point>
+std::size_t remove_isolated_points(std::vector<Point>& points, std::vector<std::vector<std::size_t> >& polygons)
 {
-  new_index.assign(number_of_points, std::size_t(-1));
+  const std::size_t unused = std::size_t(-1);
+  std::vector<std::size_t> new_index(points.size(), unused);
   for(const std::vector<std::size_t>& polygon : polygons)
     for(std::size_t v : polygon)
       new_index[v] = 0;
-  std::size_t next = 0;
-  for(std::size_t& index : new_index)
-    if(index == 0)
-      index = next++;
-  removed = number_of_points - next;
+  std::size_t used = 0;
+  for(std::size_t v = 0; v < points.size(); ++v)
+    if(new_index[v] != unused)
+    {
+      points[used] = points[v];
+      new_index[v] = used++;
+    }
+  const std::size_t removed = points.size() - used;
+  points.resize(used);
   for(std::vector<std::size_t>& polygon : polygons)
     for(std::size_t& v : polygon)
       v = new_index[v];
+  return removed;
 }
 
 // Whether two faces run along an edge the same way: an inconsistent orientation, or a
@@ -645,19 +652,20 @@ inline bool has_distinct_corners(const std::vector<std::size_t>& polygon)
 // CGAL's orient_polygon_soup() keeps the orientation of the first face it meets in each
 // component; here each component then keeps the orientation of most of its faces (a closed
 // surface stays outward when most of the file's faces were). `flipped` counts the faces
-// reversed; false, with `polygons` unchanged, when the soup would have to be cut apart to be
-// oriented (a non-manifold edge or vertex, a non-orientable component).
+// reversed; `polygons` stay as they are when the soup would have to be cut apart to be oriented
+// (a non-manifold edge or vertex, a non-orientable component).
 template <typename Point>
-bool orient_faces(const std::vector<Point>& points, std::vector<std::vector<std::size_t> >& polygons, std::size_t& flipped)
+void orient_faces(const std::vector<Point>& points, std::vector<std::vector<std::size_t> >& polygons, std::size_t& flipped)
 {
   // CGAL's orient_polygon_soup() never returns on a polygon that visits a vertex twice (a
   // fuzzed STL file whose triangle had two equal corners): such a soup is left to the checks.
+  flipped = 0;
   if(!std::all_of(polygons.begin(), polygons.end(), has_distinct_corners))
-    return false;
+    return;
   std::vector<Point> oriented_points(points);
   std::vector<std::vector<std::size_t> > oriented(polygons);
   if(!Polygon_mesh_processing::orient_polygon_soup(oriented_points, oriented) || oriented_points.size() != points.size())
-    return false;
+    return;
   // The components: faces joined across their edges (union-find on the faces).
   std::vector<std::size_t> parent(polygons.size());
   std::iota(parent.begin(), parent.end(), std::size_t(0));
@@ -678,7 +686,6 @@ bool orient_faces(const std::vector<Point>& points, std::vector<std::vector<std:
   std::vector<std::ptrdiff_t> balance(polygons.size(), 0); // per root: faces flipped minus faces kept
   for(std::size_t f = 0; f < polygons.size(); ++f)
     balance[root(f)] += oriented[f] != polygons[f] ? 1 : -1;
-  flipped = 0;
   for(std::size_t f = 0; f < polygons.size(); ++f)
   {
     const bool reverse_component = balance[root(f)] > 0;
@@ -688,7 +695,6 @@ bool orient_faces(const std::vector<Point>& points, std::vector<std::vector<std:
       ++flipped;
   }
   polygons = std::move(oriented);
-  return true;
 }
 
 // Whether CGAL's triangulate_face() can cut `polygon`: distinct, finite corners, and a plane
@@ -723,6 +729,7 @@ void triangulate_polygons(const std::vector<Point>& points, std::vector<std::vec
                           Input_repair_report& report)
 {
   typedef CGAL::Surface_mesh<Point> Face_mesh;
+  Face_mesh face_mesh; // one polygon at a time, emptied for the next (no allocation per polygon)
   std::vector<std::vector<std::size_t> > triangles;
   std::vector<std::size_t> file_face;
   triangles.reserve(polygons.size());
@@ -732,7 +739,7 @@ void triangulate_polygons(const std::vector<Point>& points, std::vector<std::vec
     bool cut = false;
     if(polygon.size() > 3 && is_cuttable_polygon(points, polygon))
     {
-      Face_mesh face_mesh;
+      face_mesh.clear_without_removing_property_maps();
       std::vector<typename Face_mesh::Vertex_index> corners;
       for(std::size_t v : polygon)
         corners.push_back(face_mesh.add_vertex(points[v]));
@@ -806,18 +813,7 @@ void repair_polygon_soup(std::vector<Point>& points, std::vector<std::vector<std
       if(v >= points.size())
         return;
   if(repairs.remove_isolated_vertices)
-  {
-    std::vector<std::size_t> new_index;
-    remove_isolated_points(polygons, new_index, points.size(), report.removed_isolated_vertices);
-    if(report.removed_isolated_vertices > 0)
-    {
-      std::vector<Point> used(points.size() - report.removed_isolated_vertices);
-      for(std::size_t v = 0; v < points.size(); ++v)
-        if(new_index[v] != std::size_t(-1))
-          used[new_index[v]] = points[v];
-      points = std::move(used);
-    }
-  }
+    report.removed_isolated_vertices = remove_isolated_points(points, polygons);
   if(repairs.orient_faces && has_repeated_directed_edge(polygons))
     orient_faces(points, polygons, report.reoriented_faces);
   if(repairs.stitch_borders)
