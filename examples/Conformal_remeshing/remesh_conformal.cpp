@@ -4,7 +4,7 @@
 //                    [--features-angle DEG] [--patches FILE] [--cut-plane a,b,c,d]...
 //                    [--save-patches DIR] [--sequential] [--report FILE.json] [--plots DIR] [--quiet]
 //                    [--time-limit SECONDS] [--optimization-rounds N] [--lloyd-iterations N] [--chord-error E]
-//                    [--no-repair]
+//                    [--no-frontal] [--no-repair]
 //
 // The input's polygons are triangulated, its faces oriented consistently, its isolated vertices
 // removed and its borders along the same points stitched first (CR::Input_repairs), unless
@@ -50,7 +50,7 @@ const char* usage =
   "                        [--features-angle DEG] [--patches FILE] [--cut-plane a,b,c,d]...\n"
   "                        [--save-patches DIR] [--sequential] [--report FILE.json] [--plots DIR] [--quiet]\n"
   "                        [--time-limit SECONDS] [--optimization-rounds N] [--lloyd-iterations N] [--chord-error E]\n"
-  "                        [--no-repair]\n"
+  "                        [--no-frontal] [--no-repair]\n"
   "  IN, OUT                 mesh files (.off .obj .ply .stl); OUT is written atomically\n"
   "  --target-edge-length L  target edge length in the input's units\n"
   "  --relative-edge-length R  target edge length as a fraction of the bounding-box diagonal (default 0.01)\n"
@@ -68,6 +68,8 @@ const char* usage =
   "  --time-limit SECONDS    give up (exit code 3, no output written) if reading and remeshing take longer\n"
   "  --optimization-rounds N rounds of flips and smoothing judged on the surface after the refinement (default 5, 0: none)\n"
   "  --lloyd-iterations N    at most N iterations of CGAL's Lloyd smoothing in the plane before them (default 0: none)\n"
+  "  --no-frontal            place the planar points by Delaunay refinement alone, with one Laplacian pass (by\n"
+  "                          default frontal insertion places them in rows of nearly equilateral triangles first)\n"
   "  --chord-error E         shorter edges where the surface bends, so that chords deviate from it by at most E\n"
   "                          (input units; down to 1/16 of the target length; default 0: uniform)\n"
   "  --no-repair             refuse polygons, inconsistent orientation, isolated vertices and cracks (by default\n"
@@ -84,7 +86,7 @@ struct Options
   double chord_error = 0.;
   int optimization_rounds = 5, lloyd_iterations = 0;
   std::vector<K::Plane_3> planes;
-  bool quiet = false, sequential = false, repair = true;
+  bool quiet = false, sequential = false, repair = true, frontal = true;
   bool features_angle_given = false; // then no fallback without features (CR::parameters::features_fallback)
 };
 
@@ -163,6 +165,8 @@ bool parse(int argc, char** argv, Options& o)
       o.quiet = true;
     else if(arg == "--no-repair")
       o.repair = false;
+    else if(arg == "--no-frontal")
+      o.frontal = false;
     else if(arg == "--time-limit")
       ok = number(o.time_limit) && o.time_limit > 0.;
     else if(arg == "--optimization-rounds")
@@ -281,12 +285,12 @@ int main(int argc, char** argv)
   const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin())
                                     + CGAL::square(box.zmax() - box.zmin()));
   const double target = o.target > 0. ? o.target : o.relative * diagonal;
-  const auto np = CR::parameters::maximum_chord_error(o.chord_error, CR::parameters::optimization_rounds(o.optimization_rounds, CR::parameters::lloyd_iterations(o.lloyd_iterations, CR::parameters::target_edge_length(
+  const auto np = CR::parameters::frontal_insertion(o.frontal, CR::parameters::maximum_chord_error(o.chord_error, CR::parameters::optimization_rounds(o.optimization_rounds, CR::parameters::lloyd_iterations(o.lloyd_iterations, CR::parameters::target_edge_length(
     target, CR::parameters::minimum_angle(
               o.min_angle, CR::parameters::features_angle(
                              o.features_angle, CR::parameters::cut_planes(
                                                  o.planes, CR::parameters::features_fallback(
-                                                             !o.features_angle_given, CR::parameters::progress(progress, CGAL::parameters::face_patch_map(patch_of))))))))));
+                                                             !o.features_angle_given, CR::parameters::progress(progress, CGAL::parameters::face_patch_map(patch_of)))))))))));
 
   if(!o.save_patches.empty())
   {
@@ -358,7 +362,7 @@ int main(int argc, char** argv)
       json.key("parameters").begin_object().field("min_angle", o.min_angle).field("features_angle", o.features_angle)
           .field("optimization_rounds", o.optimization_rounds).field("lloyd_iterations", o.lloyd_iterations)
           .field("chord_error", o.chord_error).field("cut_planes", o.planes.size()).field("patches", o.patches)
-          .field("repair", o.repair).end_object();
+          .field("repair", o.repair).field("frontal_insertion", o.frontal).end_object();
       json.key("input_repairs").begin_object().field("triangulated_polygons", repaired.triangulated_polygons)
           .field("triangles_from_polygons", repaired.triangles_from_polygons).field("reoriented_faces", repaired.reoriented_faces)
           .field("removed_isolated_vertices", repaired.removed_isolated_vertices)
@@ -379,6 +383,8 @@ int main(int argc, char** argv)
           .field("feature_edges", report.feature_edges).field("dangling_feature_edges", report.dangling_feature_edges)
           .field("boundary_curves", report.boundary_curves).field("refined_boundary_curves", report.refined_boundary_curves)
           .field("split_diagonals", report.split_diagonals).end_object();
+      json.key("frontal_insertion").begin_object().field("dropped", report.frontal_dropped)
+          .field("fallback_reason", report.frontal_fallback_reason).end_object();
       json.key("flattening").begin_object().field("max_iterations", report.max_newton_iterations)
           .field("max_curvature_error", report.max_curvature_error).field("flips", report.flips)
           .field("retriangulated_faces", report.retriangulated_faces).field("max_scale_ratio", report.max_scale_ratio).end_object();

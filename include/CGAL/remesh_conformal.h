@@ -51,7 +51,8 @@
 // Named parameters of `remesh_conformal()` (see its documentation): `target_edge_length(l)`,
 // `relative_target_edge_length(r)` (default 0.01 of the bounding-box diagonal),
 // `minimum_angle(degrees)` (default 28), `corner_angle(degrees)` (default 30),
-// `smoothing_iterations(n)` (default 1), `lloyd_iterations(n)` (default 0),
+// `frontal_insertion(b)` (default true), `smoothing_iterations(n)` (default 0 with frontal
+// insertion, 1 without), `lloyd_iterations(n)` (default 0),
 // `optimization_rounds(n)` (default 5), `features_fallback(b)` (default true),
 // `maximum_scale_ratio(r)` (default 1000) and `progress(callable)` (the last two declared in
 // flatten_poly_annuli.h).
@@ -65,6 +66,7 @@ CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(optimization_rounds)
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(sizing_field)
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(maximum_chord_error)
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(features_fallback)
+CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(frontal_insertion)
 
 namespace CGAL {
 namespace Conformal_remeshing {
@@ -131,6 +133,11 @@ struct Remeshing_report
   /// named parameter `features_fallback`); `features_fallback_reason` says why
   bool features_dropped = false;
   std::string features_fallback_reason;
+  /// the surface was meshed again with Delaunay refinement alone because the frontally placed
+  /// points did not mesh it (see the named parameter `frontal_insertion`);
+  /// `frontal_fallback_reason` says why
+  bool frontal_dropped = false;
+  std::string frontal_fallback_reason;
   std::vector<Flattening_report> patches; ///< the flattening of each patch
   int max_newton_iterations = 0;
   double max_curvature_error = 0.;
@@ -311,6 +318,15 @@ constexpr double tight_curve_split_factor = 0.045, shortest_tight_curve_split_fa
 // (tool defaults, 2026-11-27). Without the round after the collapses, the elephant kept a
 // triangle of 23.6 degrees.
 constexpr double collapse_edge_factor = 0.7;
+
+// The frontal insertion's target edge length in the plane is this times the refinement's size
+// bound (`longest_edge_factor` times the size h, through the map's scale): 0.95 h on the surface.
+// At 1 / 1.4 (h itself) its meshes of CGAL's 138 data meshes had 5% fewer vertices than
+// the refinement's (rows of equilateral triangles cover the same area with fewer), and the
+// distances to the input of some curved ones grew by up to 1.67 times (three_peaks); at 0.68 the
+// same number of vertices (+1% in the median) and distances 0.99 times the refinement's in the
+// median both ways (run_cgal_data_sweep.sh, 2026-12-01).
+constexpr double frontal_target_ratio = 0.68;
 
 // The planar refinement's shape bound is the smaller of the `minimum_angle` parameter and this:
 // about the bound for which Delaunay refinement provably ends (CGAL's default, sin^2 = 1/8 or
@@ -520,7 +536,8 @@ private:
 inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, const std::vector<double>& scale,
                                              const Extracted_patch& patch,
                                              const Curve_samples& samples, const Sizing& sizing, double min_angle,
-                                             const Planar_smoothing& smoothing, int optimization_rounds,
+                                             const Planar_smoothing& smoothing, const Frontal_insertion& frontal,
+                                             int optimization_rounds,
                                              const std::set<std::pair<std::size_t, std::size_t> >& diagonals_to_split = {},
                                              bool moves_in_parallel = false)
 {
@@ -576,7 +593,7 @@ inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, c
   for(const Planar_seed& seed : seeds_around_points(tips, target_lengths, surface_point))
     seeds.push_back(seed);
   Planar_mesh planar = mesh_planar_domain<Epick>(loops, (std::min)(min_angle, planar_refinement_angle_bound), planar_size,
-                                                 smoothing, false, local_diagonals_to_split, fixed_points, seeds);
+                                                 smoothing, false, local_diagonals_to_split, fixed_points, seeds, frontal);
   if(planar.number_of_samples != result.boundary_ids.size())
     throw Error(Error_code::NOT_AN_EMBEDDING, "remesh_conformal: the boundary samples of a patch overlap in the plane");
   result.seconds_planar_meshing = std::chrono::duration<double>(Clock::now() - start).count();
@@ -766,8 +783,8 @@ Meshed_patches mesh_patches_on_shared_samples(const Poly_annulus_segmentation& s
                                               const std::vector<Extracted_patch>& patches,
                                               const std::vector<Conformal_flattening>& flattenings,
                                               std::vector<std::vector<double> >& scales, const Sizing& sizing, double corner,
-                                              double min_angle, const Planar_smoothing& smoothing, int optimization_rounds,
-                                              const Time_limit& time_limit, const Progress& progress, Remeshing_report& report)
+                                              double min_angle, const Planar_smoothing& smoothing,
+                                              const Frontal_insertion& frontal, int optimization_rounds, const Time_limit& time_limit, const Progress& progress, Remeshing_report& report)
 {
   Meshed_patches result;
   Curve_samples& samples = result.samples;
@@ -803,7 +820,7 @@ Meshed_patches mesh_patches_on_shared_samples(const Poly_annulus_segmentation& s
         if(time_limit.is_limited())
           patch_smoothing.lloyd_seconds = (std::max)(time_limit.remaining(), 1e-6); // 0 would be none
         remeshed[p] = remesh_flattened_patch(flattenings[p], scales[p], patches[p], samples, sizing, min_angle, patch_smoothing,
-                                             optimization_rounds, diagonals_to_split[p],
+                                             frontal, optimization_rounds, diagonals_to_split[p],
                                              std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value);
       }
       catch(const Error& e)
@@ -892,10 +909,11 @@ Meshed_patches mesh_patches_on_shared_samples(const Poly_annulus_segmentation& s
 /// features, user patches and cutting planes, then plane bisection until every piece has genus 0
 /// and a boundary). Every patch boundary curve is sampled once, in 3D, on the input polyline at
 /// the target length, keeping junctions and corners; both patches beside a curve use the same
-/// samples. Each patch is flattened by `conformal_flatten()` with no overlap; CGAL's constrained
-/// Delaunay refinement meshes its planar domain with a minimum angle bound and a size bound in
-/// 3D units (the planar size is the target length times the local scale of the map), never
-/// adding points on the shared boundaries; every new planar vertex is carried back onto the input
+/// samples. Each patch is flattened by `conformal_flatten()` with no overlap; its planar domain is
+/// meshed by frontal Delaunay insertion (rows of nearly equilateral triangles grown from the
+/// boundary samples), then CGAL's constrained Delaunay refinement with a minimum angle bound and a
+/// size bound in 3D units (the planar size is the target length times the local scale of the map),
+/// never adding points on the shared boundaries; every new planar vertex is carried back onto the input
 /// surface through the flow's bijective correspondence (no projection). The patches are glued at
 /// their shared samples: the output is closed and manifold where the input is, with the input's
 /// components, boundary loops and genus. On the glued output, edges across the cuts between
@@ -934,9 +952,13 @@ Meshed_patches mesh_patches_on_shared_samples(const Poly_annulus_segmentation& s
 ///     \cgalParamDescription{boundary and feature vertices turning by more than this (degrees) are kept; so are those of the cuts between patches, except where the cut runs less than 0.3 target lengths to the next curve end}
 ///     \cgalParamDefault{30}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{frontal_insertion}
+///     \cgalParamDescription{whether the planar meshing places its points by frontal Delaunay insertion before the Delaunay refinement: rows of nearly equilateral triangles grown from the boundary samples, each point where it makes a triangle of the target size on the front (Rebay 1993), the refinement then enforcing the bounds where the fronts met. With `false`, the refinement alone places them (the paper's planar stage, and this package's until 2026-12-01), followed by one Laplacian pass. Over CGAL's 138 data meshes the median mean skewness went from 0.099 to 0.054 with the same number of vertices and distances to the input (2026-12-01; see the user manual). Should the surface not mesh with frontally placed points (patches that do not glue, an output that intersects itself even after meshing again finer), it is meshed again without them, and `Remeshing_report::frontal_dropped` says so, with the reason (`Conformal_remeshing::parameters::frontal_insertion()`)}
+///     \cgalParamDefault{true}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{smoothing_iterations}
-///     \cgalParamDescription{passes of Laplacian smoothing in the plane before the optimization on the surface (three passes, the default until 2026-11-25: planar meshing 1.8 times slower on the 87k suspension arm for a mean skewness of 0.1124 instead of 0.1130, the same 0.1178 on the shipped plate)}
-///     \cgalParamDefault{1}
+///     \cgalParamDescription{passes of Laplacian smoothing in the plane before the optimization on the surface (with frontal insertion, none by default: its rows need none, and a pass costs a triangulation and a refinement again; without it, one: three passes, the default until 2026-11-25, made the planar meshing 1.8 times slower on the 87k suspension arm for a mean skewness of 0.1124 instead of 0.1130)}
+///     \cgalParamDefault{0 with `frontal_insertion`, 1 without}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{lloyd_iterations}
 ///     \cgalParamDescription{after the Laplacian passes, at most this many iterations of CGAL's Lloyd smoothing in the plane (`lloyd_optimize_mesh_2()`, with the density of the mesh's own edge lengths, so the grading stays; the fixed points and the boundary samples do not move), then one more refinement to restore the bounds; the iterations stop at the `maximum_running_time` too. Off by default: after the optimization on the surface, 10 iterations lowered the mean skewness of the remeshing benchmark's models by 0.0005 to 0.004 for 6 to 10 times the planar meshing's time (see the user manual) (`Conformal_remeshing::parameters::lloyd_iterations()`)}
@@ -1007,8 +1029,17 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
   const double h = choose_parameter(get_parameter(np, internal_np::target_edge_length), relative * diagonal);
   const double min_angle = choose_parameter(get_parameter(np, internal_np::minimum_angle), 28.);
   const double corner = choose_parameter(get_parameter(np, internal_np::corner_angle), 30.);
-  const internal::remeshing::Planar_smoothing smoothing(choose_parameter(get_parameter(np, internal_np::smoothing_iterations), 1),
-                                                        choose_parameter(get_parameter(np, internal_np::lloyd_iterations), 0));
+  const bool frontal_on = choose_parameter(get_parameter(np, internal_np::frontal_insertion), true);
+  const int lloyd_iterations = choose_parameter(get_parameter(np, internal_np::lloyd_iterations), 0);
+  // Without frontal insertion, one Laplacian pass in the plane (see `smoothing_iterations`).
+  const internal::remeshing::Planar_smoothing refinement_smoothing(
+    choose_parameter(get_parameter(np, internal_np::smoothing_iterations), 1), lloyd_iterations);
+  const internal::remeshing::Planar_smoothing smoothing(
+    frontal_on ? choose_parameter(get_parameter(np, internal_np::smoothing_iterations), 0) : refinement_smoothing.laplacian_iterations,
+    lloyd_iterations);
+  internal::remeshing::Frontal_insertion frontal;
+  if(frontal_on)
+    frontal.target_ratio = internal::remeshing::frontal_target_ratio;
   const int optimization_rounds = choose_parameter(get_parameter(np, internal_np::optimization_rounds), 5);
   const double maximum_scale_ratio = choose_parameter(get_parameter(np, internal_np::maximum_scale_ratio), 1000.);
   if(!(h > 0.) || !std::isfinite(h))
@@ -1018,7 +1049,7 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
                                            "(no triangulation of a general domain keeps all its angles far above 30)");
   if(!(maximum_scale_ratio > 1.))
     throw Error(Error_code::INVALID_INPUT, "remesh_conformal: the maximum scale ratio must be above 1");
-  if(smoothing.laplacian_iterations < 0 || smoothing.lloyd_iterations < 0)
+  if(smoothing.laplacian_iterations < 0 || refinement_smoothing.laplacian_iterations < 0 || smoothing.lloyd_iterations < 0)
     throw Error(Error_code::INVALID_INPUT, "remesh_conformal: the numbers of smoothing and Lloyd iterations must not be negative");
   if(optimization_rounds < 0)
     throw Error(Error_code::INVALID_INPUT, "remesh_conformal: the number of optimization rounds must not be negative");
@@ -1114,191 +1145,218 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
       input_intersects = Polygon_mesh_processing::does_self_intersect<ConcurrencyTag>(input, CGAL::parameters::vertex_point_map(vpm));
     return input_intersects == 1;
   };
-  for(int refinement = 0;; ++refinement)
-  {
-    // --- shared boundary samples, then every patch meshed and pulled back -----------------------
-    start = Clock::now();
-    progress("meshing " + std::to_string(patches.size()) + " patches");
-    // Near the places where an earlier round's output intersected itself, the edges are shorter.
-    const internal::remeshing::Sizing sizing(segmentation, h,
-                                             crossings.empty() ? sizing_field
-                                                               : internal::remeshing::shorter_near(sizing_field, crossings, h / double(1 << refinement)),
-                                             chord_error);
-    const internal::remeshing::Meshed_patches meshed = internal::remeshing::mesh_patches_on_shared_samples<ConcurrencyTag>(
-      segmentation, patches, flattenings, scales, sizing, corner, min_angle, smoothing, optimization_rounds, time_limit, progress, report);
-    const internal::remeshing::Curve_samples& samples = meshed.samples;
-    const std::vector<internal::remeshing::Remeshed_patch>& remeshed = meshed.remeshed;
-    report.boundary_samples = samples.points.size();
-    report.boundary_curves = samples.number_of_curves;
-    report.seconds_meshing_stage += seconds_since(start);
-    for(const auto& r : remeshed)
+  // With the planar meshing's point placement: frontal insertion, or Delaunay refinement alone.
+  auto mesh_and_glue = [&](const internal::remeshing::Frontal_insertion& placement,
+                           const internal::remeshing::Planar_smoothing& planar_smoothing) {
+    crossings.clear();
+    for(int refinement = 0;; ++refinement)
     {
-      report.seconds_planar_meshing += r.seconds_planar_meshing;
-      report.seconds_optimization += r.seconds_optimization;
-      report.seconds_pull_back += r.seconds_pull_back;
-      report.meshing_phases += r.phases;
-      report.optimization_flips += r.optimization.flips;
-      report.optimization_splits += r.optimization.splits;
-      report.optimization_chord_splits += r.optimization.chord_splits;
-      report.optimization_collapses += r.optimization.collapses;
-      report.clamped_vertices += r.clamped_vertices;
-    }
+      // --- shared boundary samples, then every patch meshed and pulled back -----------------------
+      start = Clock::now();
+      progress("meshing " + std::to_string(patches.size()) + " patches");
+      // Near the places where an earlier round's output intersected itself, the edges are shorter.
+      const internal::remeshing::Sizing sizing(segmentation, h,
+                                               crossings.empty() ? sizing_field
+                                                                 : internal::remeshing::shorter_near(sizing_field, crossings, h / double(1 << refinement)),
+                                               chord_error);
+      const internal::remeshing::Meshed_patches meshed = internal::remeshing::mesh_patches_on_shared_samples<ConcurrencyTag>(
+        segmentation, patches, flattenings, scales, sizing, corner, min_angle, planar_smoothing, placement, optimization_rounds, time_limit,
+        progress, report);
+      const internal::remeshing::Curve_samples& samples = meshed.samples;
+      const std::vector<internal::remeshing::Remeshed_patch>& remeshed = meshed.remeshed;
+      report.boundary_samples = samples.points.size();
+      report.boundary_curves = samples.number_of_curves;
+      report.seconds_meshing_stage += seconds_since(start);
+      for(const auto& r : remeshed)
+      {
+        report.seconds_planar_meshing += r.seconds_planar_meshing;
+        report.seconds_optimization += r.seconds_optimization;
+        report.seconds_pull_back += r.seconds_pull_back;
+        report.meshing_phases += r.phases;
+        report.optimization_flips += r.optimization.flips;
+        report.optimization_splits += r.optimization.splits;
+        report.optimization_chord_splits += r.optimization.chord_splits;
+        report.optimization_collapses += r.optimization.collapses;
+        report.clamped_vertices += r.clamped_vertices;
+      }
 
-    // --- gluing at the shared samples ----------------------------------------------------------
-    start = Clock::now();
-    progress("gluing");
-    std::vector<Epick::Point_3> points(samples.points);
-    std::vector<Face> point_face(samples.face);
-    std::vector<std::array<std::size_t, 3> > triangles;
-    std::vector<std::size_t> patch_of_triangle;
-    for(const auto& r : remeshed)
-    {
-      patch_of_triangle.insert(patch_of_triangle.end(), r.triangles.size(), std::size_t(&r - remeshed.data()));
-      const std::size_t offset = points.size() - samples.points.size();
-      points.insert(points.end(), r.interior_points.begin(), r.interior_points.end());
-      point_face.insert(point_face.end(), r.interior_faces.begin(), r.interior_faces.end());
-      for(std::array<std::size_t, 3> t : r.triangles)
+      // --- gluing at the shared samples ----------------------------------------------------------
+      start = Clock::now();
+      progress("gluing");
+      std::vector<Epick::Point_3> points(samples.points);
+      std::vector<Face> point_face(samples.face);
+      std::vector<std::array<std::size_t, 3> > triangles;
+      std::vector<std::size_t> patch_of_triangle;
+      for(const auto& r : remeshed)
       {
-        for(std::size_t& c : t)
-          if(c >= samples.points.size())
-            c += offset;
-        triangles.push_back(t);
-      }
-    }
-    if(!Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(triangles))
-      throw Error(Error_code::NOT_AN_EMBEDDING, "remesh_conformal: the remeshed patches do not glue into a manifold: "
-                                                  + internal::remeshing::describe_glue_defect(triangles, patch_of_triangle, points)
-                                                  + " (internal error)");
-    // The patches kept their boundary chords and samples; now a cut's chords can be flipped too
-    // (for shape: edges between two samples), its samples and their neighbours moved on the surface
-    // (moves_after_gluing.h), the edges at moved points flipped for shape again, then the triangles
-    // below 30 degrees flipped. Should the output intersect itself with all that and not without,
-    // the flips are made again without the moves, and then none of them (below).
-    auto is_sample = [&](std::size_t i) { return i < samples.points.size(); };
-    const std::vector<Epick::Point_3> unmoved_points = points;
-    const std::vector<Face> unmoved_faces = point_face;
-    internal::remeshing::Soup_flips flips; // of the last call, to undo
-    auto improve_after_gluing = [&](bool with_moves) {
-      flips.undo(triangles);
-      points = unmoved_points;
-      point_face = unmoved_faces;
-      internal::remeshing::Glued_soup_flipper flipper(
-        points, triangles, [&](std::size_t a, std::size_t b) { return is_sample(a) && is_sample(b) && samples.is_kept_chord(a, b); },
-        (std::max)(30., min_angle));
-      flipper.shape_passes([&](std::size_t a, std::size_t b) { return is_sample(a) && is_sample(b); }, 3);
-      report.moves_after_gluing = 0;
-      if(with_moves)
-      {
-        const std::vector<char> movable = internal::remeshing::points_around_cuts(samples, triangles, points.size());
-        report.moves_after_gluing = internal::remeshing::move_points_after_gluing(
-          segmentation, points, point_face, triangles, movable, (std::max)(30., min_angle),
-          internal::remeshing::longest_edge_factor * sizing.target(), 5);
-        if(report.moves_after_gluing > 0)
-          flipper.shape_passes([&](std::size_t a, std::size_t b) { return movable[a] || movable[b]; }, 3);
-      }
-      flipper.angle_passes();
-      flips = flipper.result();
-      report.flips_after_gluing = flips.flips;
-    };
-    improve_after_gluing(true);
-    // Only the points some triangle uses become vertices: the curves are sampled before the patches
-    // are meshed, and a sample no patch triangle ends up using must not stay an isolated vertex.
-    typedef typename boost::property_traits<decltype(get(CGAL::vertex_point, output))>::value_type Output_point;
-    std::vector<std::size_t> used_points;
-    auto glue = [&](std::vector<std::array<std::size_t, 3> > soup) {
-      std::vector<std::size_t> vertex_index(points.size(), 0);
-      used_points.clear();
-      for(auto& t : soup)
-        for(std::size_t& c : t)
+        patch_of_triangle.insert(patch_of_triangle.end(), r.triangles.size(), std::size_t(&r - remeshed.data()));
+        const std::size_t offset = points.size() - samples.points.size();
+        points.insert(points.end(), r.interior_points.begin(), r.interior_points.end());
+        point_face.insert(point_face.end(), r.interior_faces.begin(), r.interior_faces.end());
+        for(std::array<std::size_t, 3> t : r.triangles)
         {
-          if(vertex_index[c] == 0)
+          for(std::size_t& c : t)
+            if(c >= samples.points.size())
+              c += offset;
+          triangles.push_back(t);
+        }
+      }
+      if(!Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(triangles))
+        throw Error(Error_code::NOT_AN_EMBEDDING, "remesh_conformal: the remeshed patches do not glue into a manifold: "
+                                                    + internal::remeshing::describe_glue_defect(triangles, patch_of_triangle, points)
+                                                    + " (internal error)");
+      // The patches kept their boundary chords and samples; now a cut's chords can be flipped too
+      // (for shape: edges between two samples), its samples and their neighbours moved on the surface
+      // (moves_after_gluing.h), the edges at moved points flipped for shape again, then the triangles
+      // below 30 degrees flipped. Should the output intersect itself with all that and not without,
+      // the flips are made again without the moves, and then none of them (below).
+      auto is_sample = [&](std::size_t i) { return i < samples.points.size(); };
+      const std::vector<Epick::Point_3> unmoved_points = points;
+      const std::vector<Face> unmoved_faces = point_face;
+      internal::remeshing::Soup_flips flips; // of the last call, to undo
+      auto improve_after_gluing = [&](bool with_moves) {
+        flips.undo(triangles);
+        points = unmoved_points;
+        point_face = unmoved_faces;
+        internal::remeshing::Glued_soup_flipper flipper(
+          points, triangles, [&](std::size_t a, std::size_t b) { return is_sample(a) && is_sample(b) && samples.is_kept_chord(a, b); },
+          (std::max)(30., min_angle));
+        flipper.shape_passes([&](std::size_t a, std::size_t b) { return is_sample(a) && is_sample(b); }, 3);
+        report.moves_after_gluing = 0;
+        if(with_moves)
+        {
+          const std::vector<char> movable = internal::remeshing::points_around_cuts(samples, triangles, points.size());
+          report.moves_after_gluing = internal::remeshing::move_points_after_gluing(
+            segmentation, points, point_face, triangles, movable, (std::max)(30., min_angle),
+            internal::remeshing::longest_edge_factor * sizing.target(), 5);
+          if(report.moves_after_gluing > 0)
+            flipper.shape_passes([&](std::size_t a, std::size_t b) { return movable[a] || movable[b]; }, 3);
+        }
+        flipper.angle_passes();
+        flips = flipper.result();
+        report.flips_after_gluing = flips.flips;
+      };
+      improve_after_gluing(true);
+      // Only the points some triangle uses become vertices: the curves are sampled before the patches
+      // are meshed, and a sample no patch triangle ends up using must not stay an isolated vertex.
+      typedef typename boost::property_traits<decltype(get(CGAL::vertex_point, output))>::value_type Output_point;
+      std::vector<std::size_t> used_points;
+      auto glue = [&](std::vector<std::array<std::size_t, 3> > soup) {
+        std::vector<std::size_t> vertex_index(points.size(), 0);
+        used_points.clear();
+        for(auto& t : soup)
+          for(std::size_t& c : t)
           {
-            used_points.push_back(c);
-            vertex_index[c] = used_points.size();
+            if(vertex_index[c] == 0)
+            {
+              used_points.push_back(c);
+              vertex_index[c] = used_points.size();
+            }
+            c = vertex_index[c] - 1;
           }
-          c = vertex_index[c] - 1;
-        }
-      std::vector<Output_point> output_points;
-      output_points.reserve(used_points.size());
-      for(std::size_t i : used_points)
-        output_points.push_back(Output_point(points[i].x(), points[i].y(), points[i].z()));
-      TriangleMesh mesh;
-      Polygon_mesh_processing::polygon_soup_to_polygon_mesh(output_points, soup, mesh);
-      return mesh;
-    };
-    TriangleMesh glued = glue(triangles);
-    // No self-intersection may be created (exact predicates): where the output intersects itself
-    // and the input does not, the post-gluing flips and moves are given up first, then the places
-    // are meshed again with shorter edges (below).
-    // Each glued mesh is checked once.
-    bool intersects = Polygon_mesh_processing::does_self_intersect<ConcurrencyTag>(glued) && !input_self_intersects();
-    if(intersects && report.moves_after_gluing > 0)
-    {
-      improve_after_gluing(false);
-      glued = glue(triangles);
-      intersects = Polygon_mesh_processing::does_self_intersect<ConcurrencyTag>(glued);
-    }
-    if(intersects && report.flips_after_gluing > 0)
-    {
-      flips.undo(triangles);
-      report.flips_after_gluing = 0;
-      glued = glue(triangles);
-      intersects = Polygon_mesh_processing::does_self_intersect<ConcurrencyTag>(glued);
-    }
-    report.seconds_gluing += seconds_since(start);
-    if(!intersects)
-    {
-      output = std::move(glued);
-      if(locations != nullptr)
-      {
-        // The soup's points become the mesh's vertices in order.
-        locations->clear();
+        std::vector<Output_point> output_points;
+        output_points.reserve(used_points.size());
         for(std::size_t i : used_points)
+          output_points.push_back(Output_point(points[i].x(), points[i].y(), points[i].z()));
+        TriangleMesh mesh;
+        Polygon_mesh_processing::polygon_soup_to_polygon_mesh(output_points, soup, mesh);
+        return mesh;
+      };
+      TriangleMesh glued = glue(triangles);
+      // No self-intersection may be created (exact predicates): where the output intersects itself
+      // and the input does not, the post-gluing flips and moves are given up first, then the places
+      // are meshed again with shorter edges (below).
+      // Each glued mesh is checked once.
+      bool intersects = Polygon_mesh_processing::does_self_intersect<ConcurrencyTag>(glued) && !input_self_intersects();
+      if(intersects && report.moves_after_gluing > 0)
+      {
+        improve_after_gluing(false);
+        glued = glue(triangles);
+        intersects = Polygon_mesh_processing::does_self_intersect<ConcurrencyTag>(glued);
+      }
+      if(intersects && report.flips_after_gluing > 0)
+      {
+        flips.undo(triangles);
+        report.flips_after_gluing = 0;
+        glued = glue(triangles);
+        intersects = Polygon_mesh_processing::does_self_intersect<ConcurrencyTag>(glued);
+      }
+      report.seconds_gluing += seconds_since(start);
+      if(!intersects)
+      {
+        output = std::move(glued);
+        if(locations != nullptr)
         {
-          const std::size_t f = segmentation.input_face[point_face[i]];
-          locations->push_back(Surface_location{f, internal::remeshing::barycentric(points[i], input_triangle[f])});
+          // The soup's points become the mesh's vertices in order.
+          locations->clear();
+          for(std::size_t i : used_points)
+          {
+            const std::size_t f = segmentation.input_face[point_face[i]];
+            locations->push_back(Surface_location{f, internal::remeshing::barycentric(points[i], input_triangle[f])});
+          }
         }
+        break;
       }
-      break;
-    }
-    typedef typename boost::graph_traits<TriangleMesh>::face_descriptor Glued_face;
-    std::vector<std::pair<Glued_face, Glued_face> > intersecting;
-    Polygon_mesh_processing::self_intersections(glued, std::back_inserter(intersecting));
-    const auto vp = get(CGAL::vertex_point, glued);
-    auto centroid = [&](Glued_face f) {
-      double c[3] = {0., 0., 0.};
-      for(auto v : CGAL::vertices_around_face(halfedge(f, glued), glued))
+      typedef typename boost::graph_traits<TriangleMesh>::face_descriptor Glued_face;
+      std::vector<std::pair<Glued_face, Glued_face> > intersecting;
+      Polygon_mesh_processing::self_intersections(glued, std::back_inserter(intersecting));
+      const auto vp = get(CGAL::vertex_point, glued);
+      auto centroid = [&](Glued_face f) {
+        double c[3] = {0., 0., 0.};
+        for(auto v : CGAL::vertices_around_face(halfedge(f, glued), glued))
+        {
+          const auto& p = get(vp, v);
+          c[0] += CGAL::to_double(p.x()) / 3.;
+          c[1] += CGAL::to_double(p.y()) / 3.;
+          c[2] += CGAL::to_double(p.z()) / 3.;
+        }
+        return Epick::Point_3(c[0], c[1], c[2]);
+      };
+      if(refinement == max_refinements || intersecting.empty())
       {
-        const auto& p = get(vp, v);
-        c[0] += CGAL::to_double(p.x()) / 3.;
-        c[1] += CGAL::to_double(p.y()) / 3.;
-        c[2] += CGAL::to_double(p.z()) / 3.;
+        std::ostringstream where;
+        if(!intersecting.empty())
+        {
+          const Epick::Point_3 c = centroid(intersecting.front().first);
+          where << " near (" << c.x() << ", " << c.y() << ", " << c.z() << ")";
+        }
+        throw Error(Error_code::NOT_AN_EMBEDDING,
+                    "remesh_conformal: the remeshed patches intersect each other" + where.str()
+                    + ", where the input does not intersect itself, even with edges of 1/" + std::to_string(1 << max_refinements)
+                    + " of the target there: two parts of the surface come closer there than the output's chords deviate from it "
+                      "(nearly touching sheets; a smaller target edge length may help), or false sharp features cut a bent surface "
+                      "into many patches (features_angle(0) may help)");
       }
-      return Epick::Point_3(c[0], c[1], c[2]);
-    };
-    if(refinement == max_refinements || intersecting.empty())
-    {
-      std::ostringstream where;
-      if(!intersecting.empty())
-      {
-        const Epick::Point_3 c = centroid(intersecting.front().first);
-        where << " near (" << c.x() << ", " << c.y() << ", " << c.z() << ")";
-      }
-      throw Error(Error_code::NOT_AN_EMBEDDING,
-                  "remesh_conformal: the remeshed patches intersect each other" + where.str()
-                  + ", where the input does not intersect itself, even with edges of 1/" + std::to_string(1 << max_refinements)
-                  + " of the target there: two parts of the surface come closer there than the output's chords deviate from it "
-                    "(nearly touching sheets; a smaller target edge length may help), or false sharp features cut a bent surface "
-                    "into many patches (features_angle(0) may help)");
+      const std::size_t known = crossings.size();
+      for(const auto& pair : intersecting)
+        for(Glued_face f : {pair.first, pair.second})
+          internal::remeshing::add_if_far(crossings, centroid(f), 0.25 * h);
+      report.self_intersection_refinements = std::size_t(refinement) + 1;
+      progress("the output intersects itself at " + std::to_string(intersecting.size()) + " pairs of triangles ("
+               + std::to_string(crossings.size() - known) + " new places): meshing again with edges of 1/"
+               + std::to_string(1 << (refinement + 1)) + " of the target there");
     }
-    const std::size_t known = crossings.size();
-    for(const auto& pair : intersecting)
-      for(Glued_face f : {pair.first, pair.second})
-        internal::remeshing::add_if_far(crossings, centroid(f), 0.25 * h);
-    report.self_intersection_refinements = std::size_t(refinement) + 1;
-    progress("the output intersects itself at " + std::to_string(intersecting.size()) + " pairs of triangles ("
-             + std::to_string(crossings.size() - known) + " new places): meshing again with edges of 1/"
-             + std::to_string(1 << (refinement + 1)) + " of the target there");
+  };
+  // Frontal insertion places the points of a thin patch (a slit, a strip narrower than the
+  // target) otherwise than the refinement does, and on some of CGAL's scans (the femur) that made
+  // patches that do not glue or an output that intersects itself, which the refinement alone
+  // avoided: the surface is then meshed again that way (see `frontal_insertion`).
+  try
+  {
+    mesh_and_glue(frontal, smoothing);
+  }
+  catch(const Error& e)
+  {
+    if(!frontal.is_on() || e.code() != Error_code::NOT_AN_EMBEDDING)
+      throw;
+    report.frontal_dropped = true;
+    report.frontal_fallback_reason = e.what();
+    const std::string caller = "remesh_conformal: ";
+    if(report.frontal_fallback_reason.compare(0, caller.size(), caller) == 0)
+      report.frontal_fallback_reason.erase(0, caller.size());
+    progress("the frontally placed points do not mesh the surface (" + report.frontal_fallback_reason
+             + "): meshing again with Delaunay refinement alone");
+    mesh_and_glue(internal::remeshing::Frontal_insertion(), refinement_smoothing);
   }
   report.output_vertices = num_vertices(output);
   report.output_faces = num_faces(output);

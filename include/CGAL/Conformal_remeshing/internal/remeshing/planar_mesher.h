@@ -8,6 +8,9 @@
 #define CGAL_CONFORMAL_REMESHING_INTERNAL_REMESHING_PLANAR_MESHER_H
 
 #include <CGAL/Conformal_remeshing/conformal_flatten.h>
+#include <CGAL/Conformal_remeshing/internal/remeshing/frontal_insertion.h>
+#include <CGAL/Conformal_remeshing/internal/remeshing/planar_point_map.h>
+#include <CGAL/Conformal_remeshing/internal/remeshing/triangle_adjacency.h>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Delaunay_mesh_face_base_2.h>
@@ -29,6 +32,9 @@
 #include <functional>
 #include <map>
 #include <memory>
+#include <queue>
+#include <limits>
+#include <cstdlib>
 #include <set>
 #include <type_traits>
 #include <utility>
@@ -38,116 +44,6 @@ namespace CGAL {
 namespace Conformal_remeshing {
 namespace internal {
 namespace remeshing {
-
-/// A hash of a planar point: a multiply-xorshift mix of its coordinates' bits, whose top bits
-/// are the best mixed (+0. turns -0. into 0., as the two compare equal).
-inline std::uint64_t planar_point_hash(double x, double y)
-{
-  const auto bits = [](double d) {
-    d += 0.;
-    std::uint64_t b;
-    std::memcpy(&b, &d, sizeof b);
-    return b;
-  };
-  const std::uint64_t h = (bits(x) * 0x9e3779b97f4a7c15ull) ^ (bits(y) * 0xc2b2ae3d27d4eb4full);
-  return (h ^ (h >> 32)) * 0xbf58476d1ce4e5b9ull;
-}
-
-/// A map from planar points to what was computed there, for the searches that remember their
-/// answers (the size field at the refinement's corners).
-/// The entries lie in one array in the order they came, which is by neighbourhood, and the table
-/// that finds them, open addressing with linear probing, holds 8 bytes a slot: the entry's
-/// number and bits of its hash, so that a probe rarely opens an entry that is not the one. It
-/// replaces `std::unordered_map`, whose lookups followed a bucket to a node in the heap and
-/// divided by a prime. Keys compare with `==` (-0. equals 0.); no point is NaN. Pointers to values
-/// stay valid until an insertion finds the map full; `reserve()` first to keep them over several.
-template <typename Value>
-class Planar_point_map
-{
-public:
-  Planar_point_map() { rehash(16); }
-
-  /// The value at `p`, or null.
-  Value* find(const Epick::Point_2& p)
-  {
-    const Slot s = slots_[slot_of(p, planar_point_hash(p.x(), p.y()))];
-    return s.entry == 0 ? nullptr : &entries_[s.entry - 1].value;
-  }
-
-  /// The value at `p` and `true` if it was inserted as `value` now, `false` if it was there.
-  std::pair<Value*, bool> try_emplace(const Epick::Point_2& p, const Value& value)
-  {
-    reserve(entries_.size() + 1);
-    const std::uint64_t h = planar_point_hash(p.x(), p.y());
-    Slot& s = slots_[slot_of(p, h)];
-    if(s.entry != 0)
-      return {&entries_[s.entry - 1].value, false};
-    entries_.push_back(Entry{p.x(), p.y(), value});
-    s = Slot{std::uint32_t(entries_.size()), std::uint32_t(h)};
-    return {&entries_.back().value, true};
-  }
-
-  /// Room for `n` points without moving the values (at most half the slots used).
-  void reserve(std::size_t n)
-  {
-    if(n > entries_.capacity())
-      entries_.reserve((std::max)(n, 2 * entries_.capacity()));
-    if(2 * n > slots_.size())
-    {
-      std::size_t capacity = slots_.size();
-      while(2 * n > capacity)
-        capacity *= 2;
-      rehash(capacity);
-    }
-  }
-
-  std::size_t size() const { return entries_.size(); }
-
-private:
-  struct Slot
-  {
-    std::uint32_t entry; // 1 + the entry's index, 0 when the slot is free
-    std::uint32_t tag;   // the low bits of the entry's hash
-  };
-  struct Entry
-  {
-    double x, y;
-    Value value;
-  };
-
-  // The slot that holds `p` (whose hash is `h`), or the free one where its probe ends: the
-  // probe starts at the slot the hash's top bits choose.
-  std::size_t slot_of(const Epick::Point_2& p, std::uint64_t h) const
-  {
-    std::size_t i = std::size_t(h >> shift_);
-    while(slots_[i].entry != 0
-          && !(slots_[i].tag == std::uint32_t(h) && entries_[slots_[i].entry - 1].x == p.x() && entries_[slots_[i].entry - 1].y == p.y()))
-      i = (i + 1) & mask_;
-    return i;
-  }
-
-  void rehash(std::size_t capacity)
-  {
-    slots_.assign(capacity, Slot{0, 0});
-    mask_ = capacity - 1;
-    shift_ = 64;
-    for(std::size_t c = capacity; c > 1; c /= 2)
-      --shift_;
-    for(std::size_t e = 0; e < entries_.size(); ++e)
-    {
-      const std::uint64_t h = planar_point_hash(entries_[e].x, entries_[e].y);
-      std::size_t i = std::size_t(h >> shift_);
-      while(slots_[i].entry != 0)
-        i = (i + 1) & mask_;
-      slots_[i] = Slot{std::uint32_t(e + 1), std::uint32_t(h)};
-    }
-  }
-
-  std::vector<Slot> slots_;
-  std::vector<Entry> entries_;
-  std::size_t mask_ = 0;
-  int shift_ = 64;
-};
 
 /// A boundary sample: its planar position and the surface point it stands for.
 struct Boundary_sample
@@ -214,22 +110,6 @@ inline std::vector<Boundary_sample> resample_loop(const std::vector<Domain_point
     }
   }
   return samples;
-}
-
-/// Where a size field found a point, for a query nearby to start from (an index the field
-/// defines: the remesher's is a flat triangle).
-typedef std::size_t Size_field_hint;
-constexpr Size_field_hint no_size_field_hint = Size_field_hint(-1);
-
-/// The size field at `p`: `size(p, hint)` when the field takes a hint (it starts its search from
-/// `hint` and sets it to where it found `p`), else `size(p)`.
-template <typename Size_field>
-double size_field_at(const Size_field& size, const Epick::Point_2& p, Size_field_hint& hint)
-{
-  if constexpr(std::is_invocable_r_v<double, const Size_field&, const Epick::Point_2&, Size_field_hint&>)
-    return size(p, hint);
-  else
-    return size(p);
 }
 
 /// Mesh_2 criteria: CGAL's shape bound, and a size bound given by a size field on the plane:
@@ -365,6 +245,12 @@ struct Planar_face_info
 {
   int depth = -1;      ///< nesting depth in the loops, for `mark_domain()`
   bool queued = false; ///< in the refinement's queue of bad faces (see `Bad_face_queue_2`)
+  // The frontal insertion's state (see `Frontal_inserter_2`): the face's stamp when it was
+  // classified (its queue entries with another stamp are stale), whether it is accepted, and
+  // its circumradius over the target edge length.
+  bool accepted = false;
+  std::uint32_t stamp = 0;
+  double radius_ratio = 0.;
 };
 
 /// The refinement's queue of bad faces: CGAL's `Mesh_2::Refine_faces_base`, the base of
@@ -505,38 +391,43 @@ private:
   Mesh_2::Face_badness current_badness_ = Mesh_2::NOT_BAD;
 };
 
+/// Local Delaunay conformity of constrained edges, also for a point about to be inserted: the
+/// rule by which `Fixed_boundary_mesher_2` and the frontal insertion refuse points. The conflict
+/// zone reports its boundary edges from the face outside it, `f`: the edge stays locally Delaunay
+/// if the point is not inside the circle through the edge and `f`'s far vertex. Across a
+/// convex-hull edge (`f` infinite) the point must lie strictly inside: a circumcentre of a thin
+/// triangle beside the hull would otherwise be inserted on the edge or beyond it, splitting a
+/// boundary chord that the neighbouring patch shares.
+template <typename CDT>
+struct Fixed_boundary_conforming : CGAL::Mesh_2::Is_locally_conforming_Delaunay<CDT>
+{
+  using CGAL::Mesh_2::Is_locally_conforming_Delaunay<CDT>::operator();
+  bool operator()(const CDT& cdt, const typename CDT::Face_handle& f, int i, const typename CDT::Point& p) const
+  {
+    if(cdt.is_infinite(f))
+    {
+      const int at_infinity = f->index(cdt.infinite_vertex());
+      return CGAL::orientation(f->vertex(CDT::ccw(at_infinity))->point(), f->vertex(CDT::cw(at_infinity))->point(), p)
+             == CGAL::RIGHT_TURN;
+    }
+    return CGAL::side_of_bounded_circle(f->vertex(CDT::cw(i))->point(), f->vertex(CDT::ccw(i))->point(),
+                                        f->vertex(i)->point(), p) != CGAL::ON_BOUNDED_SIDE;
+  }
+};
+
 /// Delaunay refinement of the faces only, for loops whose samples are shared with a neighbouring
 /// patch: no point is ever added on a constrained edge, and a new point is refused only when it
-/// would make a constrained edge non-Delaunay. (CGAL's `Delaunay_mesher_no_edge_refinement_2`
-/// refuses every point in a constrained edge's diametral circle, which blocks all refinement of a
-/// domain whose boundary is sampled more coarsely than its inside needs, like a long cylinder's
-/// annulus with a tiny inner circle.) The domain must be marked before.
+/// would make a constrained edge non-Delaunay (`Fixed_boundary_conforming`). (CGAL's
+/// `Delaunay_mesher_no_edge_refinement_2` refuses every point in a constrained edge's diametral
+/// circle, which blocks all refinement of a domain whose boundary is sampled more coarsely than
+/// its inside needs, like a long cylinder's annulus with a tiny inner circle.) The domain must be
+/// marked before.
 /// `Queue` is the faces level's base (the queue of bad faces): `Bad_face_queue_2`, or CGAL's
 /// `Mesh_2::Refine_faces_base`, which refines in the same order (a test compares them).
 template <typename CDT, typename Criteria, template <typename, typename, typename> class Queue = Bad_face_queue_2>
 class Fixed_boundary_mesher_2
 {
-  // Local Delaunay conformity of constrained edges, also for a point about to be inserted. The
-  // conflict zone reports its boundary edges from the face outside it, `f`: the edge stays
-  // locally Delaunay if the point is not inside the circle through the edge and `f`'s far vertex.
-  // Across a convex-hull edge (`f` infinite) the point must lie strictly inside: a circumcentre
-  // of a thin triangle beside the hull would otherwise be inserted on the edge or beyond it,
-  // splitting a boundary chord that the neighbouring patch shares.
-  struct Conforming : CGAL::Mesh_2::Is_locally_conforming_Delaunay<CDT>
-  {
-    using CGAL::Mesh_2::Is_locally_conforming_Delaunay<CDT>::operator();
-    bool operator()(const CDT& cdt, const typename CDT::Face_handle& f, int i, const typename CDT::Point& p) const
-    {
-      if(cdt.is_infinite(f))
-      {
-        const int at_infinity = f->index(cdt.infinite_vertex());
-        return CGAL::orientation(f->vertex(CDT::ccw(at_infinity))->point(), f->vertex(CDT::cw(at_infinity))->point(), p)
-               == CGAL::RIGHT_TURN;
-      }
-      return CGAL::side_of_bounded_circle(f->vertex(CDT::cw(i))->point(), f->vertex(CDT::ccw(i))->point(),
-                                          f->vertex(i)->point(), p) != CGAL::ON_BOUNDED_SIDE;
-    }
-  };
+  typedef Fixed_boundary_conforming<CDT> Conforming;
   typedef CGAL::Mesh_2::Refine_edges<CDT, Conforming, CGAL::Mesh_2::Do_not_refine_edges<CDT, Conforming> > Edges_level;
   typedef CGAL::Mesh_2::Refine_faces<CDT, Criteria, Edges_level, Queue<CDT, Criteria, Edges_level> > Faces_level;
 
@@ -559,6 +450,7 @@ private:
   Edges_level edges_;
   Faces_level faces_;
 };
+
 
 /// How many times each surface sample (`Boundary_sample::id`, other than `none`) appears in
 /// `loops`: twice on the two sides of a slit.
@@ -995,7 +887,10 @@ void separate_images_of_one_sample(CDT& cdt, const std::vector<std::vector<Bound
 /// Meshes the domain bounded by `loops` (outer loop first) with CGAL's constrained Delaunay
 /// refinement over `Kernel`: a minimum angle of `min_angle_degrees` (up to the refinement's
 /// guarantees near small input angles) and a longest edge below `size(p)` at each triangle's
-/// centroid, and every edge below `size` along it (see `Size_field_criteria_2`). Then
+/// centroid, and every edge below `size` along it (see `Size_field_criteria_2`). When `frontal`
+/// is on, each refinement starts from points placed by frontal insertion (see
+/// `Frontal_inserter_2`), in rows of nearly equilateral triangles, and refines only where the
+/// fronts met. Then
 /// `smoothing.laplacian_iterations` passes of Laplacian smoothing of the free vertices: each moves
 /// to the mean of its neighbours when its star stays positively oriented, the points are
 /// triangulated again with the same constraints and refined again, so the bounds still hold. Then,
@@ -1019,7 +914,7 @@ Planar_mesh mesh_planar_domain(const std::vector<std::vector<Boundary_sample> >&
                                const Size_field& size, const Planar_smoothing& smoothing, bool split_boundary = true,
                                const std::vector<std::pair<std::size_t, std::size_t> >& diagonals_to_split = {},
                                const std::vector<Epick::Point_2>& fixed_points = {},
-                               const std::vector<Planar_seed>& seeds = {})
+                               const std::vector<Planar_seed>& seeds = {}, const Frontal_insertion& frontal = {})
 {
   typedef typename Planar_triangulation<Kernel>::type CDT;
   typedef typename CDT::Vertex_handle Vertex_handle;
@@ -1061,6 +956,11 @@ Planar_mesh mesh_planar_domain(const std::vector<std::vector<Boundary_sample> >&
     mark_domain(cdt);
     if(split_diagonals(cdt))
       mark_domain(cdt);
+    if(frontal.is_on())
+    {
+      Frontal_inserter_2<CDT, Size_field, Fixed_boundary_conforming<CDT> > inserter(cdt, size, frontal);
+      inserter.run();
+    }
     if(split_boundary)
     {
       CGAL::Delaunay_mesher_2<CDT, Criteria> mesher(cdt, criteria);
