@@ -409,8 +409,8 @@ int main(int argc, char** argv)
     std::cout << "\n";
   }
   std::cout << "(where the planar meshing's thread seconds (p:) and the optimization's seconds (o:, as in optim) go, "
-               "medians of the 3 runs, summed over patches: p: the set-up (point locator, kept input vertices, seeds) and output, CGAL's "
-               "refinement, the smoothing in the plane with its refinement; o: the lifts and adjacency, the first rounds "
+               "medians of the 3 runs, summed over patches: p: the set-up (point locator, kept input vertices, seeds) and output, the frontal "
+               "insertion and CGAL's refinement, the smoothing in the plane with its refinement; o: the lifts and adjacency, the first rounds "
                "of flips and smoothing, the split passes with their rounds, the collapses with their round, the skewness "
                "passes, the angle passes)\n";
   if(!mesh_directory.empty())

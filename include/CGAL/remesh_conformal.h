@@ -83,7 +83,9 @@ struct Meshing_phase_seconds
   /// vertices kept, the seeds, the triangulation of the boundary samples and the numbering of
   /// the output
   double planar_setup = 0.;
-  double planar_refinement = 0.; ///< CGAL's Delaunay refinement of the planar domain
+  /// the placement of the planar points: the frontal insertion (when `frontal_insertion` is on)
+  /// and CGAL's Delaunay refinement of the planar domain
+  double planar_refinement = 0.;
   /// the smoothing in the plane, with the triangulation and refinement of the smoothed points
   double planar_smoothing = 0.;
   /// the optimization's set-up: the lifts of the planar points to the surface and the adjacency
