@@ -1340,9 +1340,10 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
     }
   };
   // Frontal insertion places the points of a thin patch (a slit, a strip narrower than the
-  // target) otherwise than the refinement does, and on some of CGAL's scans (the femur) that made
-  // patches that do not glue or an output that intersects itself, which the refinement alone
-  // avoided: the surface is then meshed again that way (see `frontal_insertion`).
+  // target) otherwise than the refinement does. Should that make patches that do not glue or an
+  // output that intersects itself, which the refinement alone avoids (CGAL's femur did, until its
+  // two causes were mended: see the manual), the surface is meshed again that way (see
+  // `frontal_insertion`).
   try
   {
     mesh_and_glue(frontal, smoothing);

@@ -147,18 +147,26 @@ TEST(RemeshConformal, CgalFemurTinyAnnulusWhoseOuterLoopCutOffItsHole)
   // the hole off in the plane: every chord of the hole failed to glue, however dense (up to 64
   // times), and the remesher gave up. The failing patch's other curves are now sampled more
   // densely too. The femur's mesh: smallest angle 17.7 degrees, mean skewness 0.123, 88% of the
-  // edges within [0.7, 1.4] times the target (not analysed yet; the bars are for its
-  // models).
+  // edges within [0.7, 1.4] times the target by refinement alone (not analysed yet; the issue's
+  // bars are for its models).
   Mesh mesh;
   ASSERT_TRUE(CR::read_and_check_mesh(std::string(CONFORMAL_REMESHING_CGAL_DATA) + "/meshes/femur.off", mesh).is_valid());
   const CR::Remeshing_report report
-    = check_remeshing(mesh, remeshing_checks::Quality_bars(15.).mean_skewness_at_most(0.125).edge_share_above(0.85),
+    = check_remeshing(mesh, remeshing_checks::Quality_bars(15.).mean_skewness_at_most(0.12).edge_share_above(0.8),
                       CR::parameters::features_angle(0.));
   EXPECT_GT(report.refined_boundary_curves, 0u);
-  // With frontally placed points one of its patches does not glue (an edge used twice in the
-  // same direction, not analysed yet): it is meshed again by refinement alone, as it was before.
-  EXPECT_TRUE(report.frontal_dropped);
-  EXPECT_NE(report.frontal_fallback_reason.find("do not glue"), std::string::npos) << report.frontal_fallback_reason;
+  // With frontally placed points, a patch whose loop passes one sample twice got a flip that
+  // joined the other image of that sample to its chord's other end (a second edge on the chord),
+  // and the surface was meshed again by refinement alone; no flip makes such an edge since
+  // (test `SurfaceOptimization.NoFlipMakesASecondEdgeOnAChordOfAPatchThatTouchesItself`). Then,
+  // meshed again finer where the output intersected itself, a frontal point 1e-17 off a chord
+  // made a flat triangle whose circumcentre CGAL's refinement divided by zero (an assertion in
+  // this build, which keeps them): frontal points keep a tenth of their target off constraints
+  // since (`Frontal_inserter_2::min_constraint_distance`), and the refinement leaves such
+  // faces alone (`Bad_face_queue_2::has_refinement_point()`). Measured: smallest angle 19.0
+  // degrees, mean skewness 0.110, after three rounds of meshing again finer, which leave 82.5% of
+  // the edges within [0.7, 1.4] times the target (the shorter edges near the crossings).
+  EXPECT_FALSE(report.frontal_dropped) << report.frontal_fallback_reason;
 }
 
 TEST(RemeshConformal, FrontalInsertionAgainstRefinementAlone)
@@ -1828,6 +1836,35 @@ TEST(SurfaceOptimization, LeavesANonManifoldInputAsIs)
   EXPECT_FALSE(RM::optimize_on_surface(points, positions, triangles, 0, wavy_lift_near, 28., 1., longer_than(0.9), 3).optimized);
   EXPECT_EQ(points, points_before);
   EXPECT_EQ(triangles, triangles_before);
+}
+
+namespace {
+CGAL::Epick::Point_3 flat_lift_near(const CGAL::Epick::Point_2& p, std::size_t&) { return CGAL::Epick::Point_3(p.x(), p.y(), 0.); }
+} // namespace
+
+TEST(SurfaceOptimization, NoFlipMakesASecondEdgeOnAChordOfAPatchThatTouchesItself)
+{
+  // The pentagon A B C D E, fanned from A; its corners are images of boundary samples. Flipping
+  // A-C to B-D brings every valence to its target. When E is a second image of B's sample (the
+  // patch touches itself there, as one of CGAL's femur's did), B-D would join the samples of the
+  // chord D-E: two edges on one chord once glued. No flip may make it; with five distinct
+  // samples it is made.
+  const std::vector<CGAL::Epick::Point_2> pentagon{{0., 0.}, {1., -0.3}, {2., 0.}, {1., 0.3}, {0., 0.5}};
+  const auto lift = &flat_lift_near; // the optimizer keeps a reference to it
+  typedef RM::Surface_mesh_optimizer<decltype(lift)> Optimizer;
+  auto flips_with_samples = [&](const std::vector<std::size_t>& sample_ids) {
+    std::vector<CGAL::Epick::Point_2> points = pentagon;
+    std::vector<CGAL::Epick::Point_3> positions;
+    std::size_t hint = 0;
+    for(const auto& p : points)
+      positions.push_back(flat_lift_near(p, hint));
+    std::vector<std::array<int, 3> > triangles{{{0, 1, 2}}, {{0, 2, 3}}, {{0, 3, 4}}};
+    Optimizer optimizer(points, positions, triangles, lift, 20., 10.);
+    EXPECT_TRUE(optimizer.initialize(points.size(), sample_ids));
+    return optimizer.flip_pass(Optimizer::VALENCE);
+  };
+  EXPECT_EQ(flips_with_samples({10, 11, 12, 13, 14}), 1u);
+  EXPECT_EQ(flips_with_samples({10, 11, 12, 13, 11}), 0u);
 }
 
 TEST(PlanarLocator, FindsPointsInDiagonalSliverFansByGridAndByWalks)

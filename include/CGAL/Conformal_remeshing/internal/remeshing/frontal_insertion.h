@@ -58,7 +58,8 @@ struct Frontal_insertion
 /// non-Delaunay by `Conforming` (`conforming(cdt, face, index, point)` as in CGAL's
 /// `Mesh_2::Is_locally_conforming_Delaunay`, on the conflict zone's constrained boundary edges) is
 /// not inserted, nor one closer to a vertex than `min_spacing` times its target (so the points
-/// stay apart and the insertion ends); its face is then accepted as it is. No point is ever added
+/// stay apart and the insertion ends) or to a constraint than `min_constraint_distance` times
+/// it; its face is then accepted as it is. No point is ever added
 /// on a constraint. The
 /// Delaunay refinement run after this enforces the shape and size bounds where the fronts met.
 template <typename CDT, typename Size_field, typename Conforming>
@@ -83,8 +84,12 @@ class Frontal_inserter_2
   };
 
   // (The apex of an equilateral triangle on an edge of the target length is 0.87 targets from the
-  // edge.)
-  static constexpr double min_spacing = 0.3;
+  // edge.) A point nearer a constraint than a tenth of its target makes a flat triangle on it,
+  // which the refinement cannot mend (the constraint is never split): on CGAL's femur, a point
+  // 1e-17 off a chord made one whose circumcentre divided by zero. Nearer than 0.3 targets, as
+  // for vertices, moved the shark's distance to its input by 12% (the optimization on the
+  // surface evens out the triangles of such points).
+  static constexpr double min_spacing = 0.3, min_constraint_distance = 0.1;
 
 public:
   Frontal_inserter_2(CDT& cdt, const Size_field& size, const Frontal_insertion& parameters)
@@ -116,7 +121,7 @@ public:
         continue; // its accepted neighbour was destroyed: it comes back when a new one is accepted
       double target = 0.;
       const Point x = frontal_point(f, edge, target);
-      if(insert(x, f, min_spacing * target))
+      if(insert(x, f, target))
         ++inserted;
       else
         accept(f);
@@ -217,7 +222,7 @@ private:
 
   // Inserts `x` (see the class), then classifies the faces around the new vertex and queues those
   // that became active, and the neighbours of those accepted.
-  bool insert(const Point& x, Face_handle start, double spacing)
+  bool insert(const Point& x, Face_handle start, double target)
   {
     typename CDT::Locate_type type;
     int li = 0;
@@ -228,11 +233,17 @@ private:
     zone_faces_.clear();
     zone_edges_.clear();
     cdt_.get_conflicts_and_boundary(x, std::back_inserter(zone_faces_), std::back_inserter(zone_edges_), f);
+    // A constraint that x nearly touches bounds its conflict zone (the face holding x is on it).
+    const Epick::Point_2 px = to_epick(x);
+    const double spacing = min_spacing * target, clearance = min_constraint_distance * target;
     for(const Edge& e : zone_edges_)
-      if(cdt_.is_constrained(e) && !conforming_(cdt_, e.first, e.second, x))
+      if(cdt_.is_constrained(e)
+         && (!conforming_(cdt_, e.first, e.second, x)
+             || CGAL::squared_distance(Epick::Segment_2(to_epick(e.first->vertex(CDT::ccw(e.second))->point()),
+                                                        to_epick(e.first->vertex(CDT::cw(e.second))->point())),
+                                       px) < clearance * clearance))
         return false;
     // The vertex nearest to x is a corner of the conflict zone (x's Delaunay neighbours).
-    const Epick::Point_2 px = to_epick(x);
     for(Face_handle g : zone_faces_)
       for(int i = 0; i < 3; ++i)
         if(CGAL::squared_distance(to_epick(g->vertex(i)->point()), px) < spacing * spacing)

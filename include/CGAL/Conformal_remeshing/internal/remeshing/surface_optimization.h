@@ -233,7 +233,8 @@ public:
   /// or two triangles with the same orientation. Vertices on a boundary edge and the first
   /// `number_of_fixed_points` points never move. The first points are images of the surface
   /// samples `sample_ids` when given: no flip then joins two images of one sample, the samples
-  /// of a pair in `forbidden_diagonals` (smaller first), or a vertex to two images of one sample.
+  /// of a pair in `forbidden_diagonals` (smaller first) or of a boundary edge, or a vertex to two
+  /// images of one sample.
   /// `hints[v]` (optional) is where the lift of `positions[v]` was found: the hint its next lift
   /// starts from (without one, the first lift of each vertex searches the whole plane).
   bool initialize(std::size_t number_of_fixed_points, const std::vector<std::size_t>& sample_ids = {},
@@ -249,11 +250,19 @@ public:
     std::copy_n(hints.begin(), (std::min)(hints.size(), nv), hints_.begin());
     settled_.assign(nv, 0);
     valence_.assign(nv, 0);
+    // A patch that touches itself (at a sample that its loop passes twice) has two images of one
+    // chord's end: a diagonal from the other image to the chord's other end would be a second edge
+    // on the chord in the glued mesh (CGAL's femur, with frontal insertion).
+    const auto is_sample = [&](int v) { return std::size_t(v) < sample_ids_.size(); };
     if(!link_triangles(triangles_, neighbor_, [&](int a, int b, bool interior) {
          ++valence_[a];
          ++valence_[b];
          if(!interior)
+         {
            fixed_[a] = fixed_[b] = 1;
+           if(is_sample(a) && is_sample(b))
+             forbidden_diagonals_.insert(std::minmax(sample_ids_[std::size_t(a)], sample_ids_[std::size_t(b)]));
+         }
        }))
       return false;
     // The ideal valence: 6 inside; on the boundary, one triangle per 60 degrees of the surface
