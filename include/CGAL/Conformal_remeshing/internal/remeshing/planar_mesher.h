@@ -32,9 +32,6 @@
 #include <functional>
 #include <map>
 #include <memory>
-#include <queue>
-#include <limits>
-#include <cstdlib>
 #include <set>
 #include <type_traits>
 #include <utility>
