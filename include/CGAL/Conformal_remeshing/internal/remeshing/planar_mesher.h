@@ -379,7 +379,7 @@ private:
   void queue_if_bad(Face_handle f)
   {
     Quality q;
-    if(has_refinement_point(f) && is_bad_(f, q) != Mesh_2::NOT_BAD && bad_faces_.insert(key(f), q))
+    if(is_bad_(f, q) != Mesh_2::NOT_BAD && has_refinement_point(f) && bad_faces_.insert(key(f), q))
       f->info().queued = true;
   }
 
