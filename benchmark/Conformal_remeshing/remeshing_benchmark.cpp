@@ -9,7 +9,7 @@
 // each model's two outputs as OFF files (and the input of the generated models) into DIR. With
 // --lloyd N, remesh_conformal() runs with lloyd_iterations(N) (CGAL's Lloyd smoothing in the plane).
 //
-//   remeshing_benchmark OUT.json [--relative R] [--lloyd N] [--save-meshes DIR] [MESH ...]
+//   remeshing_benchmark OUT.json [--relative R] [--lloyd N] [--rounds N] [--save-meshes DIR] [MESH ...]
 //
 // Exit code: 0, 1 when a model is refused, 2 for bad arguments or input, or an output that cannot
 // be written.
@@ -101,9 +101,10 @@ void write_json(std::ostream& out, const Measure& m)
 
 std::string usage()
 {
-  return "usage: remeshing_benchmark OUT.json [--relative R] [--lloyd N] [--save-meshes DIR] [MESH ...]\n"
+  return "usage: remeshing_benchmark OUT.json [--relative R] [--lloyd N] [--rounds N] [--save-meshes DIR] [MESH ...]\n"
          "  --relative R        target edge length over the bounding-box diagonal, 0 < R < 1 (default 0.01)\n"
          "  --lloyd N           remesh_conformal() with N Lloyd iterations in the plane, 0 to 1000 (default 0)\n"
+         "  --rounds N          remesh_conformal() with N optimization rounds on the surface, 0 to 100 (default 5)\n"
          "  --save-meshes DIR   write DIR/<model>_conformal.off and DIR/<model>_isotropic.off for each model,\n"
          "                      and DIR/<model>_input.off for the generated ones; DIR is created if missing";
 }
@@ -165,6 +166,7 @@ int main(int argc, char** argv)
   const std::string out_path = argv[1];
   double relative = 0.01;
   int lloyd = 0;
+  int rounds = 5; // remesh_conformal()'s default
   std::string mesh_directory; // empty: no --save-meshes
   std::vector<Model> models;
   try
@@ -185,14 +187,23 @@ int main(int argc, char** argv)
           throw std::invalid_argument("--relative: must be greater than 0 and less than 1: '" + std::string(argv[i]) + "'");
         continue;
       }
+      // A whole-number option from 0 to `largest`.
+      const auto whole_number = [&](int largest) {
+        if(i + 1 >= argc)
+          throw std::invalid_argument(arg + ": missing value");
+        const double n = bm::parse_double(arg, argv[++i]);
+        if(!(n >= 0. && n <= largest && n == std::floor(n)))
+          throw std::invalid_argument(arg + ": must be a whole number from 0 to " + std::to_string(largest) + ": '" + std::string(argv[i]) + "'");
+        return int(n);
+      };
       if(arg == "--lloyd")
       {
-        if(i + 1 >= argc)
-          throw std::invalid_argument("--lloyd: missing value");
-        const double n = bm::parse_double(arg, argv[++i]);
-        if(!(n >= 0. && n <= 1000. && n == std::floor(n)))
-          throw std::invalid_argument("--lloyd: must be a whole number from 0 to 1000: '" + std::string(argv[i]) + "'");
-        lloyd = int(n);
+        lloyd = whole_number(1000);
+        continue;
+      }
+      if(arg == "--rounds")
+      {
+        rounds = whole_number(100);
         continue;
       }
       if(arg == "--save-meshes")
@@ -306,7 +317,7 @@ int main(int argc, char** argv)
     {
       ours_seconds = bm::median_seconds([&] {
         report = CR::remesh_conformal(input, ours,
-                                      CR::parameters::lloyd_iterations(lloyd, CR::parameters::relative_target_edge_length(relative)));
+                                      CR::parameters::lloyd_iterations(lloyd, CR::parameters::optimization_rounds(rounds, CR::parameters::relative_target_edge_length(relative))));
         stage_seconds.push_back(report.seconds_meshing_stage);
         planar_seconds.push_back(report.seconds_planar_meshing);
         optimization_seconds.push_back(report.seconds_optimization);
@@ -349,7 +360,7 @@ int main(int argc, char** argv)
               << std::setw(8) << "" << std::setw(8) << a.skewness / b.skewness << std::setw(8) << "" << std::setw(10)
               << a.hausdorff_to / b.hausdorff_to << std::setw(10) << a.hausdorff_from / b.hausdorff_from << "\n";
     json << (k ? ",\n" : "") << "  {\"model\": " << json_string(model.name) << ", \"target_edge_length\": " << h
-         << ", \"lloyd_iterations\": " << lloyd
+         << ", \"lloyd_iterations\": " << lloyd << ", \"optimization_rounds\": " << rounds
          << ", \"patches\": " << report.number_of_patches << ", \"stage_seconds\": {\"segmentation\": "
          << report.seconds_segmentation << ", \"flattening\": " << report.seconds_flattening
          << ", \"meshing_and_pull_back\": " << report.seconds_meshing_stage << ", \"gluing\": " << report.seconds_gluing

@@ -42,6 +42,32 @@ struct Frontal_insertion
   bool is_on() const { return target_ratio > 0.; }
 };
 
+/// The circumradius of the triangle `a`, `b`, `c` from its sides and area: infinite when the
+/// corners are collinear in floating point, which exact predicates allow for a face (CGAL's
+/// circumcentre construction divides by zero there).
+inline double circumradius(const Epick::Point_2& a, const Epick::Point_2& b, const Epick::Point_2& c)
+{
+  const Epick::Vector_2 u = b - a, v = c - a, w = c - b;
+  const double twice_area = std::abs(u.x() * v.y() - u.y() * v.x());
+  if(!(twice_area > 0.))
+    return std::numeric_limits<double>::infinity();
+  return std::sqrt(u.squared_length() * v.squared_length() * w.squared_length()) / (2. * twice_area);
+}
+
+/// How far the circumcentre of the triangle `a`, `b`, `apex` stands from the midpoint of `a`-`b`
+/// along its unit normal `inward`, positive on the apex's side; infinite when the apex is not
+/// strictly on that side in floating point (no circumcentre to bound the apex by).
+inline double circumcentre_offset(const Epick::Point_2& a, const Epick::Point_2& b, const Epick::Point_2& apex,
+                                  const Epick::Vector_2& inward)
+{
+  const Epick::Point_2 m = CGAL::midpoint(a, b);
+  const double height = (apex - m) * inward;
+  if(!(height > 0.))
+    return std::numeric_limits<double>::infinity();
+  // The circumcentre m + q inward is as far from a as from the apex.
+  return ((apex - m).squared_length() - 0.25 * (b - a).squared_length()) / (2. * height);
+}
+
 /// Frontal Delaunay insertion in the marked domain of a constrained Delaunay triangulation `CDT`
 /// whose faces' info has the members `accepted`, `stamp` and `radius_ratio` (see
 /// `Planar_face_info`). A face is accepted when its circumradius is at most
@@ -159,7 +185,7 @@ private:
     const double target = (target_at(f->vertex(0), near) + target_at(f->vertex(1), near) + target_at(f->vertex(2), near)) / 3.;
     const Epick::Point_2 a = to_epick(f->vertex(0)->point()), b = to_epick(f->vertex(1)->point()),
                          c = to_epick(f->vertex(2)->point());
-    const double radius = std::sqrt(CGAL::squared_distance(CGAL::circumcenter(a, b, c), a));
+    const double radius = circumradius(a, b, c);
     f->info().radius_ratio = target > 0. ? radius / target : std::numeric_limits<double>::infinity();
     f->info().accepted = f->info().radius_ratio <= parameters_.accepted_radius_ratio;
   }
@@ -210,11 +236,11 @@ private:
     const Epick::Vector_2 chord = b - a;
     const double length = std::sqrt(chord.squared_length());
     const Epick::Vector_2 inward(-chord.y() / length, chord.x() / length); // toward f's third corner
-    const double p = 0.5 * length, q = (CGAL::circumcenter(a, b, apex) - m) * inward;
+    const double p = 0.5 * length, q = circumcentre_offset(a, b, apex, inward);
     const Size_field_hint near = hint_at(va);
     target = 0.5 * (target_at(va, near) + target_at(vb, near));
     double radius = (std::max)(target / std::sqrt(3.), p);
-    if(q > 0.)
+    if(q > 0. && q < std::numeric_limits<double>::infinity())
       radius = (std::min)(radius, (p * p + q * q) / (2. * q));
     const Epick::Point_2 x = m + (radius + std::sqrt((std::max)(0., radius * radius - p * p))) * inward;
     return Point(x.x(), x.y());
