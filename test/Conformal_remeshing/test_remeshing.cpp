@@ -1829,7 +1829,7 @@ TEST(PlanarMesher, FrontalInsertionMeasuresFacesWithoutDividingByZero)
   typedef CGAL::Epick::Vector_2 V;
   // A right triangle with legs 3 and 4: circumradius 2.5, circumcentre at the hypotenuse's midpoint.
   EXPECT_NEAR(RM::circumradius(P(0., 0.), P(4., 0.), P(0., 3.)), 2.5, 1e-15);
-  EXPECT_NEAR(RM::circumcentre_offset(P(0., 3.), P(4., 0.), P(0., 0.), V(-0.6, -0.8)), 0., 1e-15);
+  EXPECT_NEAR(RM::circumcentre_offset(P(4., 0.), P(0., 3.), P(0., 0.), V(-0.6, -0.8)), 0., 1e-15);
   // Over the edge (-1, 0)-(1, 0): the circumcentre of the apex (0, 2) is at (0, 0.75); of the
   // apex (0, 0.5) at (0, -0.75), under the edge.
   EXPECT_NEAR(RM::circumcentre_offset(P(-1., 0.), P(1., 0.), P(0., 2.), V(0., 1.)), 0.75, 1e-15);
@@ -1841,8 +1841,10 @@ TEST(PlanarMesher, FrontalInsertionMeasuresFacesWithoutDividingByZero)
   const P a(0., 0.), b(1. + e, 1.), c(1., 1. - e);
   ASSERT_EQ(CGAL::orientation(a, b, c), CGAL::RIGHT_TURN);
   EXPECT_EQ(RM::circumradius(a, b, c), std::numeric_limits<double>::infinity());
-  // An apex on the edge's line puts no bound on the frontal point over it.
+  // An apex on the edge's line, or right of it, puts no bound on the frontal point over it.
   EXPECT_EQ(RM::circumcentre_offset(P(-1., 0.), P(1., 0.), P(0.3, 0.), V(0., 1.)), std::numeric_limits<double>::infinity());
+  EXPECT_EQ(RM::circumcentre_offset(P(-1., 0.), P(1., 0.), P(0.3, -1.), V(0., 1.)), std::numeric_limits<double>::infinity());
+  EXPECT_EQ(RM::circumcentre_offset(a, b, c, V(-std::sqrt(0.5), std::sqrt(0.5))), std::numeric_limits<double>::infinity());
 }
 
 TEST(SurfaceOptimization, LeavesANonManifoldInputAsIs)

@@ -42,30 +42,33 @@ struct Frontal_insertion
   bool is_on() const { return target_ratio > 0.; }
 };
 
-/// The circumradius of the triangle `a`, `b`, `c` from its sides and area: infinite when the
-/// corners are collinear in floating point, which exact predicates allow for a face (CGAL's
-/// circumcentre construction divides by zero there).
-inline double circumradius(const Epick::Point_2& a, const Epick::Point_2& b, const Epick::Point_2& c)
+// Twice the signed area of the triangle `a`, `b`, `c` in floating point: CGAL's circumcentre
+// construction divides by it.
+inline double twice_signed_area(const Epick::Point_2& a, const Epick::Point_2& b, const Epick::Point_2& c)
 {
-  const Epick::Vector_2 u = b - a, v = c - a, w = c - b;
-  const double twice_area = std::abs(u.x() * v.y() - u.y() * v.x());
-  if(!(twice_area > 0.))
-    return std::numeric_limits<double>::infinity();
-  return std::sqrt(u.squared_length() * v.squared_length() * w.squared_length()) / (2. * twice_area);
+  const Epick::Vector_2 u = b - a, v = c - a;
+  return u.x() * v.y() - u.y() * v.x();
 }
 
-/// How far the circumcentre of the triangle `a`, `b`, `apex` stands from the midpoint of `a`-`b`
-/// along its unit normal `inward`, positive on the apex's side; infinite when the apex is not
-/// strictly on that side in floating point (no circumcentre to bound the apex by).
+/// The circumradius of the triangle `a`, `b`, `c`: infinite when its corners are collinear in
+/// floating point, which exact predicates allow for a face (CGAL's circumcentre construction
+/// would divide by zero: an assertion in debug builds, NaN in Release).
+inline double circumradius(const Epick::Point_2& a, const Epick::Point_2& b, const Epick::Point_2& c)
+{
+  if(twice_signed_area(a, b, c) == 0.)
+    return std::numeric_limits<double>::infinity();
+  return std::sqrt(CGAL::squared_distance(CGAL::circumcenter(a, b, c), a));
+}
+
+/// How far the circumcentre of the counterclockwise triangle `a`, `b`, `apex` stands from the
+/// midpoint of `a`-`b` along the edge's unit normal `inward` (toward the apex): infinite when the
+/// apex is not strictly left of `a`-`b` in floating point (no circumcentre to bound a point by).
 inline double circumcentre_offset(const Epick::Point_2& a, const Epick::Point_2& b, const Epick::Point_2& apex,
                                   const Epick::Vector_2& inward)
 {
-  const Epick::Point_2 m = CGAL::midpoint(a, b);
-  const double height = (apex - m) * inward;
-  if(!(height > 0.))
+  if(!(twice_signed_area(a, b, apex) > 0.))
     return std::numeric_limits<double>::infinity();
-  // The circumcentre m + q inward is as far from a as from the apex.
-  return ((apex - m).squared_length() - 0.25 * (b - a).squared_length()) / (2. * height);
+  return (CGAL::circumcenter(a, b, apex) - CGAL::midpoint(a, b)) * inward;
 }
 
 /// Frontal Delaunay insertion in the marked domain of a constrained Delaunay triangulation `CDT`
