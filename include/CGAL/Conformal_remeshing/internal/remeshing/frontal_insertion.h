@@ -15,6 +15,7 @@
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <iterator>
@@ -42,31 +43,42 @@ struct Frontal_insertion
   bool is_on() const { return target_ratio > 0.; }
 };
 
-// Twice the signed area of the triangle `a`, `b`, `c` in floating point: CGAL's circumcentre
-// construction divides by it.
-inline double twice_signed_area(const Epick::Point_2& a, const Epick::Point_2& b, const Epick::Point_2& c)
+/// Whether the circumcentre of the triangle `a`, `b`, `c` can be computed in floating point: not
+/// when the sine of its largest angle is below 1e-12 (its corners collinear but for rounding,
+/// which exact predicates allow for a face beside a constraint). Its circumradius then exceeds
+/// 5e11 times its longest edge, and CGAL's construction divides by zero (an assertion in debug
+/// builds, NaN in Release) or lands unboundedly far. CGAL's dino and femur made such faces beside
+/// boundary chords (2026-12-01).
+inline bool has_computable_circumcentre(const Epick::Point_2& a, const Epick::Point_2& b, const Epick::Point_2& c)
 {
-  const Epick::Vector_2 u = b - a, v = c - a;
-  return u.x() * v.y() - u.y() * v.x();
+  const std::array<Epick::Point_2, 3> p{{a, b, c}};
+  const auto squared_side = [&](int i) { return CGAL::squared_distance(p[(i + 1) % 3], p[(i + 2) % 3]); }; // opposite corner i
+  int widest = 0; // the corner opposite the longest side: the largest angle
+  for(int i = 1; i < 3; ++i)
+    if(squared_side(i) > squared_side(widest))
+      widest = i;
+  const Epick::Vector_2 u = p[(widest + 1) % 3] - p[widest], v = p[(widest + 2) % 3] - p[widest];
+  return std::abs(u.x() * v.y() - u.y() * v.x()) > 1e-12 * std::sqrt(u.squared_length() * v.squared_length());
 }
 
-/// The circumradius of the triangle `a`, `b`, `c`: infinite when its corners are collinear in
-/// floating point, which exact predicates allow for a face (CGAL's circumcentre construction
-/// would divide by zero: an assertion in debug builds, NaN in Release).
+/// The circumradius of the triangle `a`, `b`, `c`: infinite where its circumcentre cannot be
+/// computed (see `has_computable_circumcentre()`).
 inline double circumradius(const Epick::Point_2& a, const Epick::Point_2& b, const Epick::Point_2& c)
 {
-  if(twice_signed_area(a, b, c) == 0.)
+  if(!has_computable_circumcentre(a, b, c))
     return std::numeric_limits<double>::infinity();
   return std::sqrt(CGAL::squared_distance(CGAL::circumcenter(a, b, c), a));
 }
 
 /// How far the circumcentre of the counterclockwise triangle `a`, `b`, `apex` stands from the
 /// midpoint of `a`-`b` along the edge's unit normal `inward` (toward the apex): infinite when the
-/// apex is not strictly left of `a`-`b` in floating point (no circumcentre to bound a point by).
+/// apex is not strictly left of `a`-`b` in floating point or the circumcentre cannot be computed
+/// (no circumcentre to bound a point by).
 inline double circumcentre_offset(const Epick::Point_2& a, const Epick::Point_2& b, const Epick::Point_2& apex,
                                   const Epick::Vector_2& inward)
 {
-  if(!(twice_signed_area(a, b, apex) > 0.))
+  const Epick::Vector_2 u = b - a, v = apex - a;
+  if(!(u.x() * v.y() - u.y() * v.x() > 0.) || !has_computable_circumcentre(a, b, apex))
     return std::numeric_limits<double>::infinity();
   return (CGAL::circumcenter(a, b, apex) - CGAL::midpoint(a, b)) * inward;
 }

@@ -383,32 +383,15 @@ private:
       f->info().queued = true;
   }
 
-  // Whether the circumcentre of `f` can be computed in floating point: with the sine of its
-  // largest angle below 1e-12 (its corners collinear but for rounding, which exact predicates
-  // allow beside a constraint), its circumradius exceeds 5e11 times its longest edge, and CGAL's
-  // construction divides by zero or lands unboundedly far. CGAL's dino and femur made such faces
-  // beside boundary chords (2026-12-01); they are left to the optimization on the surface,
-  // which can move their inner corner. (With exact constructions the test is a rounded one, as
-  // harmless.)
+  // Faces without a computable circumcentre (see `has_computable_circumcentre()`) are left to the
+  // optimization on the surface, which can move their inner corner. (With exact constructions the
+  // test is a rounded one, as harmless.)
   static bool has_refinement_point(Face_handle f)
   {
-    double x[3], y[3];
+    std::array<Epick::Point_2, 3> p;
     for(int i = 0; i < 3; ++i)
-    {
-      x[i] = CGAL::to_double(f->vertex(i)->point().x());
-      y[i] = CGAL::to_double(f->vertex(i)->point().y());
-    }
-    const auto squared_side = [&](int i) { // opposite corner i
-      const int a = (i + 1) % 3, b = (i + 2) % 3;
-      return (x[b] - x[a]) * (x[b] - x[a]) + (y[b] - y[a]) * (y[b] - y[a]);
-    };
-    int widest = 0; // the corner opposite the longest side: the largest angle
-    for(int i = 1; i < 3; ++i)
-      if(squared_side(i) > squared_side(widest))
-        widest = i;
-    const int a = (widest + 1) % 3, b = (widest + 2) % 3;
-    const double twice_area = (x[a] - x[widest]) * (y[b] - y[widest]) - (x[b] - x[widest]) * (y[a] - y[widest]);
-    return std::abs(twice_area) > 1e-12 * std::sqrt(squared_side(a) * squared_side(b));
+      p[i] = Epick::Point_2(CGAL::to_double(f->vertex(i)->point().x()), CGAL::to_double(f->vertex(i)->point().y()));
+    return has_computable_circumcentre(p[0], p[1], p[2]);
   }
 
   typename Criteria::Is_bad is_bad_;
