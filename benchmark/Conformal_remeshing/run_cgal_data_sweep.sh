@@ -90,7 +90,11 @@ for file in "${files[@]}"; do
   timeout --kill-after=10 $((time_limit + 60)) \
     "$tool" "$file" "$output" --report "$report" --time-limit "$time_limit" </dev/null > "$log" 2>&1 || status=$?
   seconds=$(awk -v s="$start" -v e="$(date +%s.%N)" 'BEGIN { printf "%.1f", e - s }')
-  rm -f "$output" # the meshes themselves are not kept: a full sweep would fill gigabytes
+  # The meshes themselves are not kept (a full sweep would fill gigabytes), only their checksum,
+  # so that two sweeps can be compared byte for byte.
+  checksum=null
+  [ ! -f "$output" ] || checksum="\"$(sha256sum "$output" | cut -c1-64)\""
+  rm -f "$output"
   case "$status" in
     0) outcome=remeshed; remeshed=$((remeshed + 1)) ;;
     1) outcome=refused; refused=$((refused + 1)) ;;
@@ -108,7 +112,7 @@ for file in "${files[@]}"; do
     from=$(sed -n 's/.*Hausdorff distance to \/ from the input: [-0-9.e+]* \/ \([-0-9.e+]*\) x diagonal.*/\1/p' "$log" | head -n 1)
     intersections=$(sed -n 's/.*self-intersections: \([A-Za-z0-9 ]*\).*/\1/p' "$log" | head -n 1)
     rows+=("| $name | $vertices | $outcome | $seconds | $out_vertices | $min_angle ($input_angle) | $below | $skewness | $to / $from, self-intersections: $intersections |")
-    json_rows+=("{\"model\": $(json_string "$name"), \"input_vertices\": $vertices, \"outcome\": \"$outcome\", \"seconds\": $seconds, \"output_vertices\": ${out_vertices:-null}, \"minimum_angle\": ${min_angle:-null}, \"input_minimum_angle\": ${input_angle:-null}, \"percent_below_25\": ${below:-null}, \"mean_skewness\": ${skewness:-null}, \"hausdorff_to_input\": ${to:-null}, \"hausdorff_from_input\": ${from:-null}, \"self_intersections\": $(json_string "$intersections")}")
+    json_rows+=("{\"model\": $(json_string "$name"), \"input_vertices\": $vertices, \"outcome\": \"$outcome\", \"seconds\": $seconds, \"output_vertices\": ${out_vertices:-null}, \"minimum_angle\": ${min_angle:-null}, \"input_minimum_angle\": ${input_angle:-null}, \"percent_below_25\": ${below:-null}, \"mean_skewness\": ${skewness:-null}, \"hausdorff_to_input\": ${to:-null}, \"hausdorff_from_input\": ${from:-null}, \"self_intersections\": $(json_string "$intersections"), \"output_sha256\": $checksum}")
     echo "[$count/$total] $name: remeshed in $seconds s, $out_vertices vertices, smallest angle $min_angle (input $input_angle)"
   else
     message="$(grep -v '^remesh_conformal: [a-z ]*$' "$log" | tail -n 1 | cut -c1-400)"
