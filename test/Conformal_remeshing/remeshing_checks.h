@@ -92,7 +92,7 @@ CR::Remeshing_report check_remeshing(const Mesh& input, const Quality_bars& bars
 {
   Mesh output;
   std::vector<CR::Surface_location> locations;
-  const CR::Remeshing_report report = CR::remesh_conformal(input, output, np, &locations);
+  const CR::Remeshing_report report = CR::remesh_conformal(input, output, CR::parameters::vertex_locations(std::ref(locations), np));
   EXPECT_GT(output.number_of_faces(), 100u);
   const double h = report.target_edge_length;
   EXPECT_NEAR(h, 0.01 * diagonal(input), 1e-12 * diagonal(input));

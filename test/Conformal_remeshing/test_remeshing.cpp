@@ -314,8 +314,8 @@ TEST(Sizing, AChordErrorBoundShortensTheEdgesOnCurvedParts)
   std::vector<CR::Surface_location> locations;
   CR::remesh_conformal(flat, uniform, CR::parameters::target_edge_length(0.25));
   CR::remesh_conformal(flat, adaptive,
-                       CR::parameters::maximum_chord_error(0.002, CR::parameters::target_edge_length(0.25)),
-                       &locations);
+                       CR::parameters::vertex_locations(
+                         std::ref(locations), CR::parameters::maximum_chord_error(0.002, CR::parameters::target_edge_length(0.25))));
   check_topology_and_fidelity(flat, adaptive, locations);
   const auto on_sphere = [](const K::Point_3& p) { return p.z() > 0.2; };
   const auto far_out = [](const K::Point_3& p) { return p.x() * p.x() + p.y() * p.y() > 9.; };
@@ -337,7 +337,7 @@ TEST(Sizing, AUserFieldSetsTheLengthWhereItIsSmaller)
   Mesh output;
   std::vector<CR::Surface_location> locations;
   const auto field = [](const K::Point_3& p) { return p.x() > 0. ? 0.05 : 1.; };
-  CR::remesh_conformal(mesh, output, CR::parameters::sizing_field(field, CR::parameters::target_edge_length(0.15)), &locations);
+  CR::remesh_conformal(mesh, output, CR::parameters::vertex_locations(std::ref(locations), CR::parameters::sizing_field(field, CR::parameters::target_edge_length(0.15))));
   check_topology_and_fidelity(mesh, output, locations);
   const double fine = mean_edge_length(output, [](const K::Point_3& p) { return p.x() > 0.2; });
   const double coarse = mean_edge_length(output, [](const K::Point_3& p) { return p.x() < -0.5; });

@@ -194,7 +194,7 @@ TEST(RemeshAnyTopology, WhereTheOutputIntersectsItselfItIsMeshedAgainFiner)
   std::vector<CR::Surface_location> locations;
   std::vector<std::string> stages;
   const CR::Remeshing_report report = CR::remesh_conformal(
-    sheet, output, CR::parameters::progress([&](const std::string& stage) { stages.push_back(stage); }), &locations);
+    sheet, output, CR::parameters::vertex_locations(std::ref(locations), CR::parameters::progress([&](const std::string& stage) { stages.push_back(stage); })));
   EXPECT_GE(report.self_intersection_refinements, 1u);
   EXPECT_TRUE(std::any_of(stages.begin(), stages.end(), [](const std::string& s) {
     return s.find("the output intersects itself") != std::string::npos && s.find("meshing again with edges of 1/2") != std::string::npos;
@@ -427,7 +427,7 @@ TEST(RemeshAnyTopology, CgalElephantAtASmallerTarget)
   Mesh elephant, output;
   ASSERT_TRUE(CR::read_and_check_mesh(std::string(CONFORMAL_REMESHING_CGAL_DATA) + "/meshes/elephant.off", elephant).is_valid());
   std::vector<CR::Surface_location> locations;
-  ASSERT_NO_THROW(CR::remesh_conformal(elephant, output, CR::parameters::target_edge_length(0.012), &locations));
+  ASSERT_NO_THROW(CR::remesh_conformal(elephant, output, CR::parameters::vertex_locations(std::ref(locations), CR::parameters::target_edge_length(0.012))));
   remeshing_checks::check_topology_and_fidelity(elephant, output, locations);
 }
 

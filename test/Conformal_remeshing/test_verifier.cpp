@@ -205,7 +205,7 @@ TEST(VerifyRemesh, RemeshConformalOutputIsValid)
   bm::make_spherical_cap(input, 100., 8, 24);
   Mesh output;
   std::vector<CR::Surface_location> locations;
-  CR::remesh_conformal(input, output, CR::parameters::relative_target_edge_length(0.05), &locations);
+  CR::remesh_conformal(input, output, CR::parameters::vertex_locations(std::ref(locations), CR::parameters::relative_target_edge_length(0.05)));
   ASSERT_GT(output.number_of_faces(), 50u);
   const CR::Remesh_verification v =
     CR::verify_remesh(input, output, CR::parameters::vertex_locations(std::cref(locations)));

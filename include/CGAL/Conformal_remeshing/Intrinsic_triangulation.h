@@ -149,10 +149,31 @@ public:
   /// vertex and face index maps.
   ///
   /// \cgalNamedParamsBegin
-  ///   \cgalParamNBegin{vertex_point_map} the 3D points of the vertices \cgalParamNEnd
-  ///   \cgalParamNBegin{geom_traits} provides `Compute_squared_distance_3` \cgalParamNEnd
-  ///   \cgalParamNBegin{vertex_index_map, face_index_map} the numbering of vertices and faces \cgalParamNEnd
-  ///   \cgalParamNBegin{edge_is_constrained_map} edges that are marked unflippable \cgalParamNEnd
+  ///   \cgalParamNBegin{vertex_point_map}
+  ///     \cgalParamDescription{the 3D points of the vertices}
+  ///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `%Point_3` as value type}
+  ///     \cgalParamDefault{`boost::get(CGAL::vertex_point, tm)`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{geom_traits}
+  ///     \cgalParamDescription{the traits class, of which only `Compute_squared_distance_3` is used}
+  ///     \cgalParamType{a model of `Kernel`}
+  ///     \cgalParamDefault{a kernel deduced from the point type, using `CGAL::Kernel_traits`}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{vertex_index_map}
+  ///     \cgalParamDescription{the numbering of the vertices, `0` to `num_vertices(tm) - 1`}
+  ///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `std::size_t` as value type}
+  ///     \cgalParamDefault{an automatically indexed internal map}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{face_index_map}
+  ///     \cgalParamDescription{the numbering of the faces, `0` to `num_faces(tm) - 1`}
+  ///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and `std::size_t` as value type}
+  ///     \cgalParamDefault{an automatically indexed internal map}
+  ///   \cgalParamNEnd
+  ///   \cgalParamNBegin{edge_is_constrained_map}
+  ///     \cgalParamDescription{the edges that are marked unflippable}
+  ///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%edge_descriptor` as key type and `bool` as value type}
+  ///     \cgalParamDefault{no edge is constrained}
+  ///   \cgalParamNEnd
   /// \cgalNamedParamsEnd
   ///
   /// \throws Error with `Error_code::INVALID_INPUT` when a face is not a triangle, a vertex is
@@ -300,9 +321,8 @@ public:
   /// `1 + cot^2` of each angle: angles computed from rounded lengths are off by some ulps, and
   /// `d cot = -(1 + cot^2) d angle`, so the cotangents of a CAD sliver's tiny or near-flat
   /// angles (up to 1e12) are only known to within about their square times the ulp. With a
-  /// fixed tolerance, fans of such slivers flipped in circles until the flip cap (a patch of
-  /// issue #7's 100k suspension arm: stopped at 5.5 million flips, where 4.5 million now reach
-  /// the Delaunay triangulation). Boundary edges are Delaunay.
+  /// fixed tolerance, fans of such slivers flip in circles up to the flip cap on large CAD
+  /// parts instead of reaching the Delaunay triangulation. Boundary edges are Delaunay.
   bool is_delaunay(int e) const
   {
     if(is_border_edge(e))
@@ -722,7 +742,7 @@ private:
     std::array<signed char, 3> old_a, old_b; // quad label (0 i, 1 j, 2 k, 3 l) of each old corner
     // The quad's layout at flip time, i at the origin and j on the x axis: the length of ij and
     // the coordinates of k and l (5 numbers instead of 8: the flips' records are most of the
-    // flow's memory on CAD parts, 17.7 million of them on the 316k suspension arm).
+    // flow's memory on CAD parts, tens of millions of them on a 300k-vertex part).
     std::array<FT, 5> layout;
 
     Flip_record(const std::array<Point_2, 4>& points)
@@ -788,7 +808,7 @@ private:
   // of degree 2 between them), or one of them along two of its own sides. flip() and
   // split_edge() relink the other sides of the two faces assuming they lead to other faces;
   // here they would leave twins that no longer point at each other, and walks around a vertex
-  // that never end (a fuzzed flattening's refinement filled 2 GB so).
+  // that never end, filling the memory.
   bool faces_meet_elsewhere(int h) const
   {
     const int t = he_twin_[h];

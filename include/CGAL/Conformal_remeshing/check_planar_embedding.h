@@ -82,7 +82,7 @@ typedef Embedding_kernel::Point_2 Embedding_point;
 // axis test with exact orientation predicates. Two convex polygons have disjoint interiors
 // exactly when the line of an edge of one leaves the other on its closed outer side. (No
 // constructions: CGAL's exact triangle-triangle intersection trips an assertion of its interval
-// filter on some nearly degenerate pairs, found by fuzz_flatten.)
+// filter on some nearly degenerate pairs.)
 inline std::size_t count_overlapping_triangle_pairs(const std::vector<Embedding_point>& uv,
                                                     const std::vector<std::array<std::size_t, 3> >& faces)
 {

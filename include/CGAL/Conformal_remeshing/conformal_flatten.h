@@ -12,7 +12,7 @@
 #include <CGAL/Conformal_remeshing/check_mesh.h>
 #include <CGAL/Conformal_remeshing/check_planar_embedding.h>
 #include <CGAL/Conformal_remeshing/discrete_ricci_flow.h>
-#include <CGAL/Conformal_remeshing/internal/named_parameters.h>
+#include <CGAL/Conformal_remeshing/parameters.h>
 #include <CGAL/Conformal_remeshing/internal/time_limit.h>
 #include <CGAL/Conformal_remeshing/internal/welding/retriangulate_flat_regions.h>
 #include <CGAL/Conformal_remeshing/internal/welding/weld.h>
@@ -32,14 +32,6 @@
 #include <string>
 #include <vector>
 
-// Named parameters of `conformal_flatten()` (see its documentation):
-// - `welded_boundary(h)`: a border halfedge of the loop to weld (default: the longest loop);
-// - `annulus_inner_radius(delta)`: the annulus' inner radius, the outer one being 1 (default 0.3);
-// - `maximum_edge_length(l)`: patch edges longer than `l` are split first, in the intrinsic
-//   Delaunay triangulation (default: none).
-CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(welded_boundary)
-CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(annulus_inner_radius)
-CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(maximum_edge_length)
 
 namespace CGAL {
 namespace Conformal_remeshing {
@@ -316,12 +308,11 @@ inline std::vector<std::vector<int> > region_boundary_loops(const Intrinsic_tria
 // the faces that flips and these splits make of them) longer than `maximum_length` at their midpoints, in the intrinsic
 // Delaunay triangulation, until none is left, so that the conformal factor is resolved at that
 // length everywhere. Splitting on the input instead keeps a long CAD sliver a fan of slivers,
-// which the flow's first flips then undo: 22.7 million flips and 0.4 million splits for the 134k
-// shield of issue #7. The longest edge goes first and the Delaunay property is restored around
-// each new vertex before the next split: splitting all long edges of a round at once put the
-// midpoints of a CAD fan's edges on one arc, as close together as the fan's slivers, and
-// refined from there (the 87k suspension arm: 329k splits where about 7k vertices resolve its
-// area at that length; the 338k chassis: 742k in one patch). Counts the splits in `splits`;
+// which the flow's first flips then undo (tens of millions of flips on a large CAD part). The
+// longest edge goes first and the Delaunay property is restored around each new vertex before
+// the next split: splitting all long edges of a round at once puts the midpoints of a CAD fan's
+// edges on one arc, as close together as the fan's slivers, and refines from there (dozens of
+// times the splits needed to resolve the area at that length). Counts the splits in `splits`;
 // false past `split_limit` of them (a length far below the mesh's edges would split without end
 // in sight).
 inline bool split_long_patch_edges(Intrinsic_triangulation<double>& tri, std::size_t patch_faces,
@@ -438,26 +429,32 @@ inline bool split_long_patch_edges(Intrinsic_triangulation<double>& tri, std::si
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{vertex_point_map}
 ///     \cgalParamDescription{the 3D points of the vertices}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `%Point_3` as value type}
 ///     \cgalParamDefault{`boost::get(CGAL::vertex_point, mesh)`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{welded_boundary}
 ///     \cgalParamDescription{a border halfedge of the loop to weld (`Conformal_remeshing::parameters::welded_boundary()`)}
+///     \cgalParamType{`boost::graph_traits<TriangleMesh>::%halfedge_descriptor`}
 ///     \cgalParamDefault{a halfedge of the longest loop}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{annulus_inner_radius}
 ///     \cgalParamDescription{the inner radius of the annulus (`Conformal_remeshing::parameters::annulus_inner_radius()`)}
-///     \cgalParamDefault{0.3 (measured by the welding_parameters benchmark)}
+///     \cgalParamType{`double`, in (0, 1), the outer radius being 1}
+///     \cgalParamDefault{0.3}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{maximum_edge_length}
 ///     \cgalParamDescription{edges of the patch longer than this are split at their midpoints in its intrinsic Delaunay triangulation before the flow (each new vertex lies exactly on the surface), until none is left, so that the conformal factor is resolved at that length and long CAD slivers do not shear the map; flat regions of at least 16 faces (developable or coplanar) get the points of a square grid of side 1/1.5 of it first, in their constrained Delaunay retriangulation (`Conformal_remeshing::parameters::maximum_edge_length()`)}
+///     \cgalParamType{`double`}
 ///     \cgalParamDefault{no splitting}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_iterations}
 ///     \cgalParamDescription{the maximum number of Newton iterations of the flow}
+///     \cgalParamType{`int`}
 ///     \cgalParamDefault{50}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{curvature_tolerance}
 ///     \cgalParamDescription{the flow stops when the curvature error is below it (`Conformal_remeshing::parameters::curvature_tolerance()`)}
+///     \cgalParamType{`double`}
 ///     \cgalParamDefault{1e-10}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{maximum_running_time}
@@ -660,7 +657,7 @@ Conformal_flattening conformal_flatten(const TriangleMesh& mesh,
   result.face_region.resize(tri.number_of_faces());
   // The regions are bounded by seams (welded and hole loops), which are never flipped, and their
   // split halves: one walk back through the correspondence per connected set of faces across the
-  // other edges suffices (a walk per face took most of the 24 s of layout of issue #7's 87k arm).
+  // other edges suffices (a walk per face is far slower on large CAD parts).
   {
     std::vector<char> seen(tri.number_of_faces(), 0);
     std::vector<int> stack;

@@ -8,7 +8,7 @@
 #define CGAL_CONFORMAL_REMESHING_DISCRETE_RICCI_FLOW_H
 
 #include <CGAL/Conformal_remeshing/Error.h>
-#include <CGAL/Conformal_remeshing/internal/named_parameters.h>
+#include <CGAL/Conformal_remeshing/parameters.h>
 #include <CGAL/Conformal_remeshing/Intrinsic_triangulation.h>
 #include <CGAL/Conformal_remeshing/internal/ricci_flow/lobachevsky.h>
 #include <CGAL/Conformal_remeshing/internal/ricci_flow/triangle_geometry.h>
@@ -31,18 +31,6 @@
 #include <type_traits>
 #include <vector>
 
-// Named parameters of `discrete_ricci_flow()` (see its documentation):
-// - `curvature_tolerance(t)`: the flow stops when max |K̄ - K| is below `t` (default 1e-10);
-// - `use_edge_flips(b)`: keep the triangulation Delaunay by edge flips (default `true`); `false`
-//   gives the plain Newton method of a fixed triangulation, for comparisons;
-// - `edge_split_angle(a)`: a boundary or unflippable edge with an opposite angle above `a` is
-//   split at the foot of that angle's altitude (default 0.9 pi; pi or more disables splitting);
-// - `exact_conformal_path(b)`: flip every edge at the moment it stops being Delaunay along each
-//   Newton step (default `false`), for the path-independent discrete conformal metric.
-CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(curvature_tolerance)
-CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(use_edge_flips)
-CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(edge_split_angle)
-CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(exact_conformal_path)
 
 namespace CGAL {
 namespace Conformal_remeshing {
@@ -160,9 +148,9 @@ double ricci_energy(const Intrinsic_triangulation<FT>& tri, const std::vector<FT
 ///
 /// Boundary and unflippable edges cannot be flipped; when an angle opposite such an edge
 /// exceeds the split angle (the triangle is close to degenerate and no flip can help), the edge
-/// is split instead (DESIGN.md 2.5), at the foot of the altitude from the obtuse corner: both new
-/// triangles are right-angled there, so one split cures the corner (a midpoint split does not
-/// when the corner is off the middle, and slivers of CAD fans then took many rounds). A new vertex has target
+/// is split instead, at the foot of the altitude from the obtuse corner: both new triangles are
+/// right-angled there, so one split cures the corner (a midpoint split does not when the corner
+/// is off the middle, and slivers of CAD fans then take many rounds). A new vertex has target
 /// curvature 0 (it lies on a straight piece of the target boundary, or in the flat interior);
 /// `Ricci_flow_result::target_curvatures` lists the targets of all vertices, old and new.
 ///
@@ -175,7 +163,7 @@ double ricci_energy(const Intrinsic_triangulation<FT>& tri, const std::vector<FT
 ///     `Ricci_flow_result::at_rounding_floor`)
 ///   - `CGAL::parameters::sparse_linear_solver(s)`: only the *type* of `s` is used: an Eigen sparse
 ///     solver for `Eigen::SparseMatrix<FT>` (default `Eigen::SimplicialLDLT<Eigen::SparseMatrix<FT>>`;
-///     `Eigen::CholmodSupernodalLLT` is faster above a few 100k vertices, see the benchmark);
+///     `Eigen::CholmodSupernodalLLT` is faster above a few 100k vertices);
 ///     the symbolic analysis is redone only after the connectivity changed, and an earlier
 ///     factorization is reused as a preconditioner of conjugate gradients while that converges
 ///     in a few iterations.
@@ -293,8 +281,8 @@ Ricci_flow_result<FT> discrete_ricci_flow(Intrinsic_triangulation<FT>& tri,
     // Each round of splits is followed by flips; the time limit is also checked between rounds
     // (the caller's Newton loop then stops with TIME_LIMIT_EXCEEDED). A split at the altitude's
     // foot cures its corner, so a few rounds suffice; more mean splits feeding each other across
-    // a constraint in a collapsing metric (seen on the paper's shield: thousands of rounds of 15
-    // splits, lengths shrinking to 1e-26), which the Newton loop then reports as not converging.
+    // a constraint in a collapsing metric (thousands of rounds, with lengths shrinking towards
+    // 1e-26), which the Newton loop then reports as not converging.
     for(int round = 0; round < 16 && split_angle < pi && result.number_of_splits < max_splits && !time_limit.exceeded(); ++round)
     {
       std::vector<std::pair<int, FT> > todo; // edge, where to split it (fraction from its halfedge's source)
@@ -558,8 +546,8 @@ Ricci_flow_result<FT> discrete_ricci_flow(Intrinsic_triangulation<FT>& tri,
       break;
     }
     // Newton's error falls quadratically until it meets the rounding of the angle sums; a full
-    // step that no longer halves it means that floor is reached (1.4e-10 on a 570k-vertex CAD
-    // disc, issue #7: 42 more iterations changed nothing, then the patch was bisected).
+    // step that no longer halves it means that floor is reached (around 1e-10 on a large CAD
+    // disc, where dozens more iterations change nothing).
     if(last_step_was_full && error < FT(100) * tolerance && !(error < FT(0.5) * error_before_step))
     {
       restore_best();

@@ -10,7 +10,7 @@
 
 #include <CGAL/Conformal_remeshing/Error.h>
 #include <CGAL/Conformal_remeshing/conformal_flatten.h>
-#include <CGAL/Conformal_remeshing/internal/named_parameters.h>
+#include <CGAL/Conformal_remeshing/parameters.h>
 #include <CGAL/Conformal_remeshing/internal/parallel_for_each_index.h>
 #include <CGAL/Conformal_remeshing/internal/time_limit.h>
 #include <CGAL/Conformal_remeshing/segment_into_poly_annuli.h>
@@ -25,10 +25,6 @@
 #include <string>
 #include <vector>
 
-// `maximum_scale_ratio(r)` (default 1000): a patch whose local scale varies more is bisected.
-// `progress(callable)`: told when each stage starts.
-CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(maximum_scale_ratio)
-CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(progress)
 
 namespace CGAL {
 namespace Conformal_remeshing {
@@ -50,11 +46,11 @@ namespace internal {
 /// less, but not below a quarter of `longest` (at most 16 times the vertices). A tube, an
 /// annulus whose loops are within a factor of 4 in length, has a map whose scale grows like
 /// exp(2 pi d / C) along it, for a circumference C, and the map is affine on each flat triangle,
-/// so a triangle must not span much of that growth. On the walls of the 10 mm holes of issue #6's
-/// brake disc (height 28, circumference 31, one sliver from a rim to the mid-plane), twice the
-/// target (9.6) spans a factor of 6.8; the remeshed walls averaged a skewness of 0.163 (the
-/// hub's, circumference 500, 0.119). (An annulus with a small hole in a large sheet is no tube:
-/// its scale changes near the hole only, and a tenth of the hole over the sheet would be costly.)
+/// so a triangle must not span much of that growth (on the wall of a small hole of a brake disc,
+/// a few target lengths around, a triangle of twice the target length spans a scale factor of
+/// about 7, and the remeshed wall is visibly more skewed). (An annulus with a small hole in a
+/// large sheet is no tube: its scale changes near the hole only, and a tenth of the hole over
+/// the sheet would be costly.)
 constexpr double tube_resolution = 1. / 10.;
 inline double flow_edge_length(const Extracted_patch& patch, double longest)
 {
@@ -139,7 +135,7 @@ void flatten_poly_annuli(Poly_annulus_segmentation& segmentation, Flattened_poly
                     + " faces cannot be flattened after 8 bisections: " + failures[first]);
     for(std::size_t p : to_bisect)
     {
-      // Said, because the attempt can be most of the time on a large part (issue #7's shield).
+      // Said, because the failed attempt can take most of the time on a large part.
       progress("bisecting a patch of " + std::to_string(result.faces[p].size()) + " faces: " + failures[p]);
       ++result.bisections;
       if(!bisect_patch(segmentation, segmentation.faces_of_patch(p), 2, snap))
@@ -164,18 +160,22 @@ void flatten_poly_annuli(Poly_annulus_segmentation& segmentation, Flattened_poly
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{maximum_scale_ratio}
 ///     \cgalParamDescription{a patch whose largest local scale exceeds its smallest by more than this is bisected (`Conformal_remeshing::parameters::maximum_scale_ratio()`)}
+///     \cgalParamType{`double`, above 1}
 ///     \cgalParamDefault{1000}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{snap_distance}
 ///     \cgalParamDescription{vertices closer than this to a bisecting plane are taken as on it (`Conformal_remeshing::parameters::snap_distance()`; `remesh_conformal()` passes a tenth of the target edge length)}
+///     \cgalParamType{`double`}
 ///     \cgalParamDefault{0}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{progress}
 ///     \cgalParamDescription{a callable `void(const std::string& stage)` told when each round starts and why a patch is bisected (`Conformal_remeshing::parameters::progress()`)}
+///     \cgalParamType{a callable convertible to `std::function<void(const std::string&)>`}
 ///     \cgalParamDefault{none}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{maximum_running_time}
 ///     \cgalParamDescription{a limit in seconds on the wall-clock time of the call (`Conformal_remeshing::parameters::maximum_running_time()`)}
+///     \cgalParamType{`double`}
 ///     \cgalParamDefault{no limit}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd

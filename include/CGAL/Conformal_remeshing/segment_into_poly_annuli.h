@@ -3,14 +3,14 @@
 //
 // Segmentation of any orientable manifold triangle mesh into poly-annuli (connected, genus 0,
 // at least one boundary loop): along sharp features, user patches and planes, then plane
-// bisection of every piece that still has a handle or no boundary (paper Sec. 3, DESIGN.md 2.9).
+// bisection of every piece that still has a handle or no boundary (paper Sec. 3).
 
 #ifndef CGAL_CONFORMAL_REMESHING_SEGMENT_INTO_POLY_ANNULI_H
 #define CGAL_CONFORMAL_REMESHING_SEGMENT_INTO_POLY_ANNULI_H
 
 #include <CGAL/Conformal_remeshing/Error.h>
 #include <CGAL/Conformal_remeshing/check_mesh.h>
-#include <CGAL/Conformal_remeshing/internal/named_parameters.h>
+#include <CGAL/Conformal_remeshing/parameters.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
@@ -31,14 +31,6 @@
 #include <string>
 #include <vector>
 
-// Named parameters of `segment_into_poly_annuli()` (see its documentation):
-// - `features_angle(degrees)`: edges whose dihedral angle deviates from flat by more than this
-//   are sharp features (default 60; 0 or less: none);
-// - `cut_planes(planes)`: a `std::vector<CGAL::Epick::Plane_3>` cutting the surface first;
-// - `snap_distance(d)`: vertices closer than `d` to a cutting plane are taken as on it.
-CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(features_angle)
-CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(cut_planes)
-CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(snap_distance)
 
 namespace CGAL {
 namespace Conformal_remeshing {
@@ -534,11 +526,8 @@ inline double dihedral_turn(const Mesh& m, Segmentation::Edge e)
 // are no features: they separate nothing, and a slit shorter than the target edge length opens
 // so little in the plane that the mesher must split the edges that would join both of its sides
 // (see `mesh_planar_domain()`). Unless an edge of the chain turns by more than `kept_turn`
-// degrees: a crease that sharp is a detail of the shape, which the output would cut off.
-// (The shark's: three edges of 0.69 target lengths in all, turning by up to 131 degrees; without
-// them its farthest output triangles stood 0.17 target lengths off the input there, and its
-// distance from the input was 0.0032 of the diagonal instead of 0.0018. The elephant's 16 short
-// chains, a scan's wrinkles, turn by 78 degrees at most.)
+// degrees: a crease that sharp is a detail of the shape, which the output would cut off (on a
+// scanned model the short chains are wrinkles that turn much less, and are dropped).
 inline void drop_short_dangling_features(Segmentation& s, double min_length, double kept_turn)
 {
   Mesh& m = s.mesh;
@@ -630,26 +619,32 @@ inline bool bisect_patch(Poly_annulus_segmentation& s, const std::vector<Poly_an
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{vertex_point_map}
 ///     \cgalParamDescription{the 3D points of the vertices}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type and `%Point_3` as value type}
 ///     \cgalParamDefault{`boost::get(CGAL::vertex_point, mesh)`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{edge_is_constrained_map}
 ///     \cgalParamDescription{the sharp features (a property map from edges to `bool`); replaces the detection}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%edge_descriptor` as key type and `bool` as value type}
 ///     \cgalParamDefault{detected with `features_angle`}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{features_angle}
 ///     \cgalParamDescription{the dihedral angle in degrees above which an edge is sharp (`Conformal_remeshing::parameters::features_angle()`; 0 or less: no feature)}
+///     \cgalParamType{`double`}
 ///     \cgalParamDefault{60}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{face_patch_map}
 ///     \cgalParamDescription{user patches: a property map from faces to patch ids; their borders are cuts, kept as chains of output edges by `remesh_conformal()`}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and a value type convertible to `std::size_t`}
 ///     \cgalParamDefault{none}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{cut_planes}
 ///     \cgalParamDescription{planes (a `std::vector<CGAL::Epick::Plane_3>`) that cut the surface first (`Conformal_remeshing::parameters::cut_planes()`)}
+///     \cgalParamType{`std::vector<CGAL::Epick::Plane_3>`}
 ///     \cgalParamDefault{none}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{snap_distance}
 ///     \cgalParamDescription{vertices closer to a cutting plane than this are taken as on it (`Conformal_remeshing::parameters::snap_distance()`); the scale of the smallest detail kept: pieces of a bisection narrower than 5 times this join the other side, and feature chains inside a patch shorter than 10 times this are dropped unless they turn by more than 90 degrees somewhere (`remesh_conformal()` passes a tenth of the target edge length)}
+///     \cgalParamType{`double`}
 ///     \cgalParamDefault{0.001 times the bounding-box diagonal}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd

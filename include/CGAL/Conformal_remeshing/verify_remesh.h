@@ -10,7 +10,7 @@
 #include <CGAL/Conformal_remeshing/Error.h>
 #include <CGAL/Conformal_remeshing/check_mesh.h>
 #include <CGAL/Conformal_remeshing/check_planar_embedding.h>
-#include <CGAL/Conformal_remeshing/internal/named_parameters.h>
+#include <CGAL/Conformal_remeshing/parameters.h>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
 #include <CGAL/AABB_traits.h>
@@ -35,11 +35,6 @@
 #include <utility>
 #include <vector>
 
-// Named parameters of `verify_remesh()` (see its documentation): `distance_tolerance(t)`,
-// `relative_distance_tolerance(r)` (default 1e-9) and `vertex_locations(range)`.
-CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(distance_tolerance)
-CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(relative_distance_tolerance)
-CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(vertex_locations)
 
 namespace CGAL {
 namespace Conformal_remeshing {
@@ -226,11 +221,13 @@ inline void compare_topologies(Remesh_verification& v)
 ///     \cgalParamDescription{the largest distance allowed between an output vertex and the input
 ///                           surface, or its location, in the units of the input
 ///                           (`Conformal_remeshing::parameters::distance_tolerance()`)}
+///     \cgalParamType{`double`}
 ///     \cgalParamDefault{`relative_distance_tolerance` times the input's bounding-box diagonal}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{relative_distance_tolerance}
 ///     \cgalParamDescription{the same tolerance as a fraction of the input's bounding-box diagonal
 ///                           (`Conformal_remeshing::parameters::relative_distance_tolerance()`)}
+///     \cgalParamType{`double`}
 ///     \cgalParamDefault{`1e-9`, raised if needed to 16 units in the last place of the largest
 ///                       input coordinate (the precision of a point at that magnitude)}
 ///   \cgalParamNEnd
@@ -244,10 +241,13 @@ inline void compare_topologies(Remesh_verification& v)
 ///                           `CGAL::Polygon_mesh_processing::locate()`), such as the
 ///                           `Surface_location`s of `remesh_conformal()`; pass it as
 ///                           `std::cref(range)` to avoid a copy}
+///     \cgalParamType{a random access range, e.g. `std::vector<Surface_location>`, or a
+///                    `std::reference_wrapper` to one}
 ///     \cgalParamDefault{none: the locations are not checked}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{face_index_map}
 ///     \cgalParamDescription{the face index map of `input` that `input_face` refers to}
+///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<InputMesh>::%face_descriptor` as key type and `std::size_t` as value type}
 ///     \cgalParamDefault{the internal face index map of `input`, initialized if needed}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
@@ -283,8 +283,8 @@ Remesh_verification verify_remesh(const InputMesh& input, const OutputMesh& outp
   };
   // The distance queries construct points (projections onto the input's faces) in double
   // precision, and CGAL's exact fallback traps on the NaN that a vanishing or overflowing square
-  // gives them (found by fuzz/fuzz_check_soup): every squared edge length and squared double
-  // area of the input must be a normal number.
+  // gives them: every squared edge length and squared double area of the input must be a
+  // normal number.
   {
     const auto input_points = get(CGAL::vertex_point, input);
     std::size_t index = 0;
@@ -477,7 +477,7 @@ struct Parameterization_verification
 /// triangles overlap, the boundary polygons are simple and the holes lie inside the outer
 /// boundary. It runs `check_parameterization()` with the overlap count, after the checks that
 /// keep the exact computations away from non-finite numbers and from coordinates beyond
-/// &plusmn;1e70 (whose products overflow the interval filters; found by fuzz/fuzz_check_soup).
+/// &plusmn;1e70 (whose products overflow the interval filters).
 ///
 /// \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
 /// \tparam UVMap a readable property map from vertices to `Epick::Point_2`

@@ -658,7 +658,7 @@ template <typename Point>
 void orient_faces(const std::vector<Point>& points, std::vector<std::vector<std::size_t> >& polygons, std::size_t& flipped)
 {
   // CGAL's orient_polygon_soup() never returns on a polygon that visits a vertex twice (a
-  // fuzzed STL file whose triangle had two equal corners): such a soup is left to the checks.
+  // triangle with two equal corners, say): such a soup is left to the checks.
   flipped = 0;
   if(!std::all_of(polygons.begin(), polygons.end(), has_distinct_corners))
     return;

@@ -1,7 +1,7 @@
 // Copyright (c) 2026 CGAL Conformal Remeshing contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The `maximum_running_time` named parameter: a limit on the wall-clock time of a call, checked
+// CGAL's `maximum_running_time` named parameter: a limit on the wall-clock time of a call, checked
 // between steps (Newton iterations, stages, patches). A call that exceeds it throws
 // `Error(Error_code::TIME_LIMIT_EXCEEDED)`; the step under way when the limit passes finishes
 // first, so a call may overrun by the duration of one step.
@@ -10,7 +10,7 @@
 #define CGAL_CONFORMAL_REMESHING_INTERNAL_TIME_LIMIT_H
 
 #include <CGAL/Conformal_remeshing/Error.h>
-#include <CGAL/Conformal_remeshing/internal/named_parameters.h>
+#include <CGAL/Conformal_remeshing/parameters.h>
 
 #include <CGAL/Named_function_parameters.h>
 
@@ -21,9 +21,6 @@
 #include <sstream>
 #include <string>
 
-// `maximum_running_time(seconds)`: the call throws `Error_code::TIME_LIMIT_EXCEEDED` once it has
-// run longer (default: no limit).
-CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(maximum_running_time)
 
 namespace CGAL {
 namespace Conformal_remeshing {
@@ -53,7 +50,7 @@ public:
   {
     using CGAL::parameters::choose_parameter;
     using CGAL::parameters::get_parameter;
-    return Time_limit(double(choose_parameter(get_parameter(np, internal_np::maximum_running_time),
+    return Time_limit(double(choose_parameter(get_parameter(np, CGAL::internal_np::maximum_running_time),
                                               std::numeric_limits<double>::infinity())),
                       caller);
   }

@@ -1,7 +1,7 @@
 // Copyright (c) 2026 CGAL Conformal Remeshing contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// Patch boundaries sampled once, in 3D, on the input polylines (DESIGN.md 2.10): both patches
+// Patch boundaries sampled once, in 3D, on the input polylines: both patches
 // beside a curve use the same samples, so the remeshed patches glue into one watertight mesh.
 
 #ifndef CGAL_CONFORMAL_REMESHING_INTERNAL_REMESHING_BOUNDARY_CURVES_H
@@ -50,22 +50,21 @@ struct Curve_samples
 };
 
 /// Pieces of cut (patch borders that are not features, borders or user borders) shorter than
-/// this times the target length do not end at a turn (see `sample_boundary_curves()`). (The
-/// elephant from 0.009 to 0.016 of its diagonal, against no such rule: the smallest angle is the
-/// same or larger, 16.9 -> 20.7 degrees at 1%, and the distances to the input the same or smaller;
-/// CGAL's other models are unchanged. At 0.5 the angles rose more, to 24.3 degrees at 1%, but the
-/// distance from the input grew to 1.15 times isotropic_remeshing's.)
+/// this times the target length do not end at a turn (see `sample_boundary_curves()`). On a
+/// scanned model this raises the smallest angles (from 17 to 21 degrees at 1%) and keeps the
+/// distances to the input; a larger bound, 0.5, raises them more but moves the output away from
+/// the input.
 constexpr double shortest_cut_piece = 0.3;
 
 /// A border curve is sampled closer where it bends, so that its chords stand at most about
 /// `border_chord_deviation` times the spacing off it, but never closer than
 /// `closest_border_samples` times the spacing. Why: the output surface ends at the chords, so a
 /// chord's sagitta is the distance from the input border to the output; at the spacing, a border
-/// of radius 7 times the target (the flat sheet's rounded corners) stands 0.018 times the target
-/// off, where `isotropic_remeshing`, which keeps the input's border vertices, stood 0.015 off. At
-/// 0.8 times the spacing, the edges stay within [0.7, 1.4] times the target. Features are left
+/// of radius 7 times the target (a flat sheet's rounded corners) would stand 0.018 times the
+/// target off, farther than with `isotropic_remeshing`, which keeps the input's border vertices.
+/// At 0.8 times the spacing, the edges stay within [0.7, 1.4] times the target. Features are left
 /// at the spacing: on a scan their polylines zigzag, and their turns are noise, not curvature
-/// (the elephant's distance to the input rose from 0.90 to 1.16 times the peer's).
+/// (sampling them closer moves the output away from the input).
 constexpr double border_chord_deviation = 0.008;
 constexpr double closest_border_samples = 0.8;
 
@@ -73,14 +72,10 @@ constexpr double closest_border_samples = 0.8;
 /// the curves that meet it: their spacing grows from its length by `boundary_grading` times the
 /// distance along them. Why: the planar refinement cannot split a boundary chord, and where a chord
 /// a target long meets one a fortieth of it, the points the refinement puts near the short one
-/// stand almost on the long one on the surface. CGAL's blade.off has a flat strip 0.033 wide along
-/// its trailing edge; at its default target (1.30) the chords across the strip's ends left a
-/// triangle of 0.034 degrees, 16.6 with this grading (edges within [0.7, 1.4] times the target:
-/// 97.6% -> 94.0%; a grading of 0.5 gave 16.0 degrees and 89.3%, 0.75 gave 5.2 degrees: the
-/// flattening still shears the strip's slivers). Of the remeshing benchmark's other models only
-/// the shark has such curves: its output changed within issue #5's bars (distance to the input
-/// 0.00120 -> 0.00156 of the diagonal, isotropic_remeshing's 0.00164; with a bound of 0.1 targets
-/// it kept its mesh, and the blade got 4.9 degrees).
+/// stand almost on the long one on the surface. (On CGAL's blade.off, whose flat strip along the
+/// trailing edge is a fortieth of the target wide, this grading raises the smallest angle from
+/// 0.03 to 17 degrees; slower ones, 0.5 or 0.75, give no larger angle, as the flattening still
+/// shears the strip's slivers.)
 constexpr double tiny_curve = 0.25;
 constexpr double boundary_grading = 1.;
 
@@ -160,9 +155,8 @@ inline Curve_samples sample_boundary_curves(const Poly_annulus_segmentation& s, 
 
   // A cut between patches follows input edges, and on a scan it zigzags: a turn above the corner
   // angle between two pieces of cut, one of them shorter than `shortest_cut_piece` times the
-  // target, is no curve end. Its samples, a short chord apart, left a sliver between them and the
-  // next output vertex (the elephant at 1%: 16.9 degrees, 20.7 so). Features, borders and user
-  // borders keep their corners.
+  // target, is no curve end: its samples, a short chord apart, would leave a sliver between them
+  // and the next output vertex. Features, borders and user borders keep their corners.
   const double short_piece = shortest_cut_piece * sizing.target();
   std::vector<Vertex> smoothed_turns;
   for(Vertex v : m.vertices())

@@ -4,10 +4,10 @@
 // Edge flips on the glued output, for the shapes the patches cannot improve alone. Each patch
 // is optimized with its boundary samples and boundary chords fixed (both neighbours must keep
 // the same chords to glue), so a thin triangle leaning on a cut between two patches stays,
-// however good the triangle on the other side is: on CGAL's elephant (a cut every few target
-// lengths) six triangles below 20 degrees, the smallest 4.9. Once the patches are glued, a chord
-// of a cut is an edge like any other and can be flipped; chords of features, borders and user
-// patch borders stay.
+// however good the triangle on the other side is (on a scanned model cut every few target
+// lengths, a few such triangles are below 20 degrees, down to 5). Once the patches are glued, a
+// chord of a cut is an edge like any other and can be flipped; chords of features, borders and
+// user patch borders stay.
 
 #ifndef CGAL_CONFORMAL_REMESHING_INTERNAL_REMESHING_FLIPS_AFTER_GLUING_H
 #define CGAL_CONFORMAL_REMESHING_INTERNAL_REMESHING_FLIPS_AFTER_GLUING_H

@@ -47,8 +47,8 @@ struct Frontal_insertion
 /// when the sine of its largest angle is below 1e-12 (its corners collinear but for rounding,
 /// which exact predicates allow for a face beside a constraint). Its circumradius then exceeds
 /// 5e11 times its longest edge, and CGAL's construction divides by zero (an assertion in debug
-/// builds, NaN in Release) or lands unboundedly far. CGAL's dino and femur made such faces beside
-/// boundary chords (2026-12-01).
+/// builds, NaN in Release) or lands unboundedly far. Such faces occur beside boundary chords
+/// (on CGAL's dino and femur, for example).
 inline bool has_computable_circumcentre(const Epick::Point_2& a, const Epick::Point_2& b, const Epick::Point_2& c)
 {
   const std::array<Epick::Point_2, 3> p{{a, b, c}};
@@ -126,10 +126,11 @@ class Frontal_inserter_2
 
   // (The apex of an equilateral triangle on an edge of the target length is 0.87 targets from the
   // edge.) A point nearer a constraint than a tenth of its target makes a flat triangle on it,
-  // which the refinement cannot mend (the constraint is never split): on CGAL's femur, a point
-  // 1e-17 off a chord made one whose circumcentre divided by zero. Nearer than 0.3 targets, as
-  // for vertices, moved the shark's distance to its input by 12% (the optimization on the
-  // surface evens out the triangles of such points).
+  // which the refinement cannot mend (the constraint is never split; a point 1e-17 off a chord
+  // makes one whose circumcentre divides by zero). A bound of 0.3 targets, as for vertices,
+  // would refuse too many points near constraints (it moves the distance to the input by about
+  // 12% on a scanned model); the optimization on the surface evens out the triangles of points
+  // between the two bounds.
   static constexpr double min_spacing = 0.3, min_constraint_distance = 0.1;
 
 public:

@@ -3,9 +3,8 @@
 //
 // Input vertices that become output vertices: the tips of a coarse input. Output vertices lie on
 // the input surface but anywhere on it, and where a coarse mesh comes to a point (a vertex that
-// stands out from its ring) the output triangles around it cut the tip off: on CGAL's
-// nefertiti the point of the input farthest from the output was such a tip, 0.4 target lengths
-// away.
+// stands out from its ring) the output triangles around it cut the tip off, by up to about half
+// a target length on a coarse scanned model.
 
 #ifndef CGAL_CONFORMAL_REMESHING_INTERNAL_REMESHING_KEPT_INPUT_VERTICES_H
 #define CGAL_CONFORMAL_REMESHING_INTERNAL_REMESHING_KEPT_INPUT_VERTICES_H
@@ -35,14 +34,12 @@ namespace remeshing {
 /// - sharp: their angle sum differs from a full turn by more than half a radian (cones or
 ///   saddles) and their ring's mean radius exceeds half the target length. A tip on a smaller
 ///   ring stays cut: the output cannot follow it anyway, and triangles fanning out from it to
-///   points a target length away stood off the surface around it (the shark's distance to the
-///   input, 0.00179 -> 0.00200 of the diagonal);
-/// - or coarse: their ring's mean radius exceeds 2.5 target lengths, whatever their angle sum.
-///   The coarse spherical cap's vertices (edges 5.7 `h`, angle defect 0.005 radian) stood 0.03
-///   to 0.05 `h` over the output; keeping them took its distances to / from the input from 1.24
-///   to 0.85 times isotropic_remeshing's (2026-11-27). Without the radius bound, the vertices of
-///   finer parts' creases and ridges were kept too, and pinned the optimization: the elephant's
-///   mean skewness 0.120 -> 0.134, the shark's distance to the input 0.97 -> 1.26 times the peer's.
+///   points a target length away would stand off the surface around it;
+/// - or coarse: their ring's mean radius exceeds 2.5 target lengths, whatever their angle sum
+///   (the nearly flat vertices of a coarse spherical cap stand a few hundredths of `h` over the
+///   output; keeping them brings its distance to the input below isotropic_remeshing's). The
+///   radius bound keeps the vertices of finer parts' creases and ridges out: kept, they would
+///   pin the optimization (more skewed triangles, a larger distance to the input).
 /// Taken greedily from the highest, each at least `h` from the others and from every point of
 /// `avoid` (the patch's boundary samples), so that the refinement meets no short distance it
 /// cannot grade.
@@ -76,7 +73,7 @@ inline std::vector<std::size_t> kept_input_vertices(const Extracted_patch& patch
       continue;
     const double height = std::abs(to_centroid * normal) / (double(ring.size()) * area);
     const double cut = height * (std::min)(radius, 0.6 * h) / radius;
-    // The angle sum last: its arc tangents were most of this search on a fine input, whose
+    // The angle sum last: its arc tangents would be most of this search on a fine input, whose
     // vertices' tips are far lower than the tolerance.
     if(!(cut > tolerance * h))
       continue;

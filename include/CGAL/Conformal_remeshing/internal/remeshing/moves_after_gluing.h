@@ -4,8 +4,8 @@
 // Vertex moves on the glued output, around the cuts between patches. Each patch is optimized
 // with its boundary samples fixed (both neighbours must agree on them to glue), and a cut is
 // sampled at its turns: on a scan, where cuts follow input edges and zigzag, the triangles at
-// those samples are the worst of the output (CGAL's elephant at 1%: mean equiangle skewness 0.225
-// around a curve end, 0.112 away from the samples). Once the patches are glued, a cut is no more
+// those samples are the worst of the output (on a scanned model, about twice the mean equiangle
+// skewness of those away from the samples). Once the patches are glued, a cut is no more
 // than a line on the surface: its samples and their neighbours may move on the surface like any
 // vertex. The samples of features, borders and user patch borders stay.
 
@@ -75,9 +75,8 @@ closest_point_nearby(const Poly_annulus_segmentation& s, Poly_annulus_segmentati
 
 /// Which points of a glued triangle soup may move after gluing: the samples of `samples` on no
 /// kept curve (feature, border, user patch border), and the points that share a triangle with one
-/// and are no sample (the samples are the first points of the soup). (On CGAL's elephant at 1%,
-/// moving the samples alone gave a mean skewness of 0.1198 and a smallest angle of 24.3 degrees;
-/// with their neighbours 0.1170 and 28.4.)
+/// and are no sample (the samples are the first points of the soup). (Moving the neighbours too
+/// raises the smallest angle of a scanned model by a few degrees.)
 inline std::vector<char> points_around_cuts(const Curve_samples& samples, const std::vector<std::array<std::size_t, 3> >& triangles,
                                             std::size_t number_of_points)
 {
@@ -98,8 +97,8 @@ inline std::vector<char> points_around_cuts(const Curve_samples& samples, const 
 
 /// How far a moved star may pass from where its vertex first was, in mean edge lengths of the
 /// star: a turn of a cut at an input vertex is often on a crease, and a star that cuts the crease
-/// off moves the output away from the input. (CGAL's elephant at 1%: 0.02, 0.05 and 0.1 gave mean
-/// skewness 0.1195 to 0.1198 and the same distances to the input within the sampling's noise.)
+/// off moves the output away from the input. (Any value from 0.02 to 0.1 gives about the same
+/// skewness and distances to the input on a scanned model.)
 constexpr double largest_cut_off = 0.05;
 
 /// Moves the points `i` with `movable[i]` of a glued triangle soup (consistently oriented, a
@@ -114,7 +113,7 @@ constexpr double largest_cut_off = 0.05;
 /// stars that have one below `target_degrees`, by a compass search on it, with the same bounds and
 /// no more triangles below the target (at a turn of a cut, two fixed samples and the patch's
 /// own passes can leave a triangle near 20 degrees, that the skewness moves raise only by
-/// chance: CGAL's elephant at 1% had one at 20.8 degrees). Returns the moves made.
+/// chance). Returns the moves made.
 inline std::size_t move_points_after_gluing(const Poly_annulus_segmentation& s, std::vector<Epick::Point_3>& points,
                                              std::vector<Poly_annulus_segmentation::Face>& point_face,
                                              const std::vector<std::array<std::size_t, 3> >& triangles,

@@ -46,9 +46,8 @@ public:
       for(int v : t)
         box_ += points[v].bbox();
     // Cells of four times the triangles' mean area: the slivers of a CAD input cross many cells
-    // (7.6 on average on the 100k brake disc at one mean area, 4.2 at four), and the grid serves
-    // only the searches whose walk fails. The brake disc's grids took 0.080 s to build at one
-    // mean area, 0.046 s at four; its planar stage took 4% less time, the fine cap's 9% less.
+    // (about 8 each at one mean area, 4 at four), and the grid serves only the searches whose
+    // walk fails, so larger cells, faster to fill, make the planar stage faster.
     const double area = (box_.xmax() - box_.xmin()) * (box_.ymax() - box_.ymin());
     const double cell = 2. * std::sqrt((std::max)(area, 1e-300) / double((std::max<std::size_t>)(triangles.size(), 1)));
     nx_ = (std::max)(1, (std::min)(4096, int((box_.xmax() - box_.xmin()) / cell) + 1));
@@ -84,7 +83,7 @@ public:
       for(int step = 0; step < 16; ++step)
       {
         // The sides' signed areas with `p` lead the walk: the coordinates, which divide them by
-        // the triangle's area, only where all are positive (one step in six on the fine cap).
+        // the triangle's area, only where all are positive (about one step in six).
         std::array<double, 3> b = side_areas(t, p);
         int k = int(std::min_element(b.begin(), b.end()) - b.begin());
         if(b[k] >= 0.)
@@ -128,8 +127,8 @@ public:
             const std::array<double, 3> b = barycentric(t, p);
             const double score = (std::min)({b[0], b[1], b[2]});
             // Strictly inside: no other triangle of an embedding holds the point. (Scanning the
-            // rest of the cell too made 7.3 million barycentric tests on the 100k brake disc,
-            // whose cells along feature curves hold dozens of slivers; 5.0 million now.)
+            // rest of the cell too would cost about 45% more barycentric tests on CAD parts, whose
+            // cells along feature curves hold dozens of slivers.)
             if(score > 0.)
               return Location{t, b};
             if(score > best_score)
@@ -157,8 +156,8 @@ public:
 private:
   // Calls `f` with every cell that triangle `t` overlaps, row by row from the triangle's extent
   // within the row: its bounding box alone would put a long diagonal sliver (CAD cylinders are
-  // strips of them) in a square of cells, which took a quarter of the brake disc's meshing stage
-  // to fill and another to search. A point rounded to a neighbouring row or column is still found:
+  // strips of them) in a square of cells, which would take a quarter of a CAD part's meshing
+  // stage to fill and another to search. A point rounded to a neighbouring row or column is still found:
   // `locate()` searches the ring of cells around its cell when its own holds no triangle with it.
   template <typename F>
   void for_each_cell(std::size_t t, const F& f) const

@@ -113,18 +113,14 @@ inline std::vector<Boundary_sample> resample_loop(const std::vector<Domain_point
 /// a triangle is too big when its longest edge exceeds the field at its centroid, or when an
 /// edge is longer than the field along it, integrated by the trapezoidal rule over its ends.
 /// The field varies fast where the map's scale does: across the wall of a small hole, a narrow
-/// conformal band, by a factor of 7 on the shipped plate (height 6 around a circumference of
-/// 20). With the centroid alone, the triangles beside the rim where the scale is small reached
-/// 1.3 times the target on the surface and stood farthest from the input: 0.00099 of the
-/// diagonal both ways on the plate, 0.00088 and 0.00086 with the edges (isotropic_remeshing:
-/// 0.00093 and 0.00079; distances on a grid of a sixth of the target). (The smallest of the
-/// field at the centroid and the corners did better there, 0.00071 and 0.00069, but made
-/// smoothly graded meshes of smooth surfaces uneven: mean skewness 0.068 to 0.111 on a
-/// spherical cap.)
+/// conformal band, by a factor of 7 on a plate whose hole is about as deep as it is wide. With
+/// the centroid alone, the triangles beside the rim where the scale is small grow to
+/// 1.3 times the target on the surface and stand farthest from the input; the edge test bounds
+/// them as well. (The smallest of the field at the centroid and the corners would bound
+/// them more tightly, but makes smoothly graded meshes of smooth surfaces uneven.)
 /// The field at the corners is remembered per point: the refinement judges every face it makes,
-/// so each vertex came back about 25 times (1.8 million evaluations for the 54k output vertices
-/// of the shield, each a point location among the slivers of the flattened input), 0.8 million
-/// evaluations with the corners remembered.
+/// so each vertex comes back about 25 times, and each evaluation is a point location among the
+/// slivers of the flattened input; remembering more than halves the evaluations.
 /// A field that takes a hint (see `size_field_at()`) is asked about a face's new corner and its
 /// centroid from where it found a corner known before: the refinement takes its bad faces by
 /// quality, not by place, so the last query's place was anywhere.
@@ -145,7 +141,7 @@ public:
 
   // `Delaunay_mesh_criteria_2`, which holds the shape bound, is a virtual base of `Base`: only the
   // most derived class constructs it, and `Base`'s initializer of it is skipped. Without it here,
-  // the bound was CGAL's default 0.125 (20.7 degrees) whatever the caller asked for.
+  // the bound would be CGAL's default 0.125 (20.7 degrees) whatever the caller asks for.
   Size_field_criteria_2(double shape_bound, const Size_field& size)
     : CGAL::Delaunay_mesh_criteria_2<CDT>(shape_bound), Base(shape_bound, 0.), size_(size),
       corner_sizes_(std::make_shared<Corner_sizes>())
@@ -253,8 +249,8 @@ struct Planar_face_info
 /// The refinement's queue of bad faces: CGAL's `Mesh_2::Refine_faces_base`, the base of
 /// `Mesh_2::Refine_faces`, with the same faces in the same order, at less cost. Its map orders
 /// the faces by their corner points (`Double_map`: the queue's order among faces of equal quality
-/// depends on that order, so it is kept), which it read through the face and its vertices at each
-/// comparison: a key now holds a copy of the corners. A face flags itself as queued
+/// depends on that order, so it is kept), which CGAL's reads through the face and its vertices
+/// at each comparison; here a key holds a copy of the corners. A face flags itself as queued
 /// (`Planar_face_info`), so that only the faces of a conflict zone that are queued are searched
 /// for, not all of them. The faces' info must be `Planar_face_info`; the corners of a queued face
 /// must not change, which holds when insertions replace conflict zones (no flip), as the faces
@@ -485,14 +481,14 @@ struct Planar_seed
 /// is `distance` away from `from`, found by bisection after growing `t` from `guess` by half
 /// until the image is far enough; the images' distance to `from` must grow with `t`. False when
 /// the ray leaves the flattening first (`surface_point()` below) or `t` reaches `limit`.
-/// Each trial point is a lift through the flow's flips, and the 16 steps of the bisection took
-/// a quarter of the planar stage on the 100k brake disc, whose feature curves are seeded
-/// (2026-11-27). So the answer is first bracketed closely by regula falsi (Illinois), in 3 to 5
+/// Each trial point is a lift through the flow's flips, and the 16 steps of a plain bisection
+/// can take a quarter of the planar stage of a CAD part whose feature curves are seeded. So the
+/// answer is first bracketed closely by regula falsi (Illinois), in 3 to 5
 /// lifts, and the bisection lifts only the trial points inside that bracket: the others are on
 /// a known side, as the distance grows with `t`. The result is the bisection's, to the bit.
 /// (Regula falsi alone, to a ten-thousandth of the distance, moves the seeds by about that much,
-/// and the optimization after them amplifies it: the shark's distance to the input, decided at
-/// one detail finer than the target, spread from 0.15 to 0.24 target lengths.)
+/// and the optimization after them amplifies it: on a scanned model the output's distance to
+/// the input, set by a detail finer than the target, would vary by half.)
 template <typename Surface_point>
 bool point_at_surface_distance(const Epick::Point_2& origin, const Epick::Vector_2& direction, const Epick::Point_3& from,
                                double distance, double guess, double limit, const Surface_point& surface_point,
@@ -563,18 +559,18 @@ bool point_at_surface_distance(const Epick::Point_2& origin, const Epick::Vector
 /// Seeds for the first `layers` rows of triangles along the loops (each with the domain on its
 /// left). Over each chord from `a` to `b` with `seeded(a, b)`, unless `a` or `b` is on a slit (a
 /// sample with two images; a slit is a feature chain that ends inside the patch, as a scan's false
-/// features: seeded, they cost CGAL's elephant 2.5% of its edges within [0.7, 1.4] times the
-/// target and 6% on its distance to the input): the point of the chord's planar
+/// features, whose seeds would cost a few percent of the edges near the target length and of
+/// the distance to the input): the point of the chord's planar
 /// bisector whose surface image is as far from the chord's first end as the two ends are from
 /// each other, an equilateral triangle on the surface; then over the segment between each two
 /// consecutive seeds of a row, the seed of the next row, the same way. `surface_point(p, x)` sets
 /// `x` to the image of `p` and returns false when `p` is outside the flattening; such seeds, and
 /// those farther than 8 chords, are left out (and the row's segments next to them).
 /// Why: the refinement cannot split a shared boundary chord, and inserts the circumcentres of the
-/// triangles on it, close to it: over the chords of the brake disc's hole walls (tubes, whose
-/// scale grows by a factor of 2.4 across a triangle) the apexes stood at 0.40 of the chord
-/// (median; 0.87 for an equilateral triangle), 0.54 after the optimization, and these triangles
-/// averaged a skewness of 0.31. On a tube, the refinement also makes about twice the points that
+/// triangles on it, close to it: over the chords of a tube such as the wall of a small hole,
+/// whose scale grows by a factor of about 2 across a triangle, the apexes stand at about half
+/// the height of an equilateral triangle's, even after the optimization, and these triangles are
+/// badly skewed. On a tube, the refinement also makes about twice the points that
 /// rows of equilateral triangles need. The optimization only moves points; rows of apexes first
 /// let the refinement fill the rest.
 template <typename Surface_point>
@@ -600,7 +596,7 @@ std::vector<Planar_seed> equilateral_seeds(const std::vector<std::vector<Boundar
     const Epick::Point_2 middle = CGAL::midpoint(a.uv, b.uv);
     const double side = std::sqrt(CGAL::squared_distance(a.point, b.point));
     // A row's segment much longer or shorter than the triangles it joins (a zigzag boundary)
-    // gets no apex: on a sphere cut along its edges, such apexes left a 12.8-degree triangle.
+    // gets no apex: on a sphere cut along its edges, such apexes make triangles of 13 degrees.
     const double below = 0.5 * (a.side + b.side);
     if(below > 0. && (side > 1.33 * below || 1.33 * side < below))
       return false;
@@ -645,8 +641,8 @@ std::vector<Planar_seed> equilateral_seeds(const std::vector<std::vector<Boundar
 /// `target_lengths(p)` gives the target edge length at `p` on the surface and in the plane (the
 /// search's first guess); `surface_point()` is as for equilateral_seeds(). Why: a fixed point
 /// pins the optimization, and the refinement's points around it are wherever its triangles'
-/// circumcentres fell: with the 694 tips kept on the coarse spherical cap (2026-11-27), the mean
-/// skewness rose from 0.074 to 0.118 without these rings, to 0.104 with them.
+/// circumcentres fall (on a coarse spherical cap with hundreds of kept tips, these rings take
+/// back about a third of the mean skewness that the fixed points cost).
 template <typename Target_lengths, typename Surface_point>
 std::vector<Planar_seed> seeds_around_points(const std::vector<std::pair<Epick::Point_2, Epick::Point_3> >& centres,
                                              const Target_lengths& target_lengths, const Surface_point& surface_point)
@@ -719,7 +715,7 @@ struct Planar_triangulation
 // Marks the faces of `cdt` at odd nesting depth (counting constraints crossed from the
 // infinite face) as the domain: the outer loop's inside minus the holes. The faces' info
 // (`Planar_face_info`, see `Planar_face_base_2`) holds their depth while it runs (-1: not reached
-// yet), in place of a hash map from face to depth that took as long as the walk itself.
+// yet), rather than a hash map from face to depth, which would take as long as the walk itself.
 template <typename CDT>
 void mark_domain(CDT& cdt)
 {
@@ -916,8 +912,8 @@ void separate_images_of_one_sample(CDT& cdt, const std::vector<std::vector<Bound
 /// smoothing moves. The `seeds` inside the domain are inserted before the refinement, in
 /// order, each unless a vertex is closer than its clearance (see `equilateral_seeds()`); no
 /// smoothing moves them either (the Laplacian mean in the plane pulls a seed toward the side where
-/// the map's scale is smaller: on a flattened tube, the first row's median height fell from 0.87
-/// to 0.48 of its chord on the surface).
+/// the map's scale is smaller: on a flattened tube, it would about halve the first row's height
+/// on the surface).
 template <typename Kernel, typename Size_field>
 Planar_mesh mesh_planar_domain(const std::vector<std::vector<Boundary_sample> >& loops, double min_angle_degrees,
                                const Size_field& size, const Planar_smoothing& smoothing, bool split_boundary = true,

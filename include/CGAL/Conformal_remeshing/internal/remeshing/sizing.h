@@ -1,9 +1,10 @@
 // Copyright (c) 2026 CGAL Conformal Remeshing contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// The target edge length on the surface, in 3D units (issue: uniform, a user field, or adaptive
-// to curvature with a chord-error bound). The planar mesher turns it into a planar size through
-// the local scale of the map (DESIGN.md 2.8); the boundary sampler spaces samples by it.
+// The target edge length on the surface, in 3D units (uniform, a user field, or adaptive to
+// curvature with a chord-error bound). The planar mesher turns it into a planar size: the 3D
+// target length times the local scale of the map (planar length over surface length). The
+// boundary sampler spaces samples by it.
 
 #ifndef CGAL_CONFORMAL_REMESHING_INTERNAL_REMESHING_SIZING_H
 #define CGAL_CONFORMAL_REMESHING_INTERNAL_REMESHING_SIZING_H

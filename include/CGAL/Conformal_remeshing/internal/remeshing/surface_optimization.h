@@ -109,7 +109,7 @@ struct Triangle_shape
   /// In a triangle the second term is never the smaller: `t_max - 60 <= 120 - 2 t_min` says
   /// `t_max + 2 t_min <= 180 = t_min + t_mid + t_max`, that is `t_min <= t_mid`. So the skewness
   /// is `1 - t_min / 60`, one arc cosine instead of two: the optimization evaluates tens of
-  /// millions of them (its skewness and smoothing passes took 85% of its time on the shark).
+  /// millions of them (its skewness and smoothing passes are most of its time).
   static double skewness(const Epick::Point_3& p, const Epick::Point_3& q, const Epick::Point_3& r)
   {
     return skewness_of_squared_sides(CGAL::squared_distance(q, r), CGAL::squared_distance(r, p), CGAL::squared_distance(p, q));
@@ -128,8 +128,8 @@ struct Triangle_shape
   }
 
   /// `acos` of `x` clamped to [-1, 1], within 2e-8 (Abramowitz and Stegun 4.4.46): the
-  /// optimization evaluates tens of millions of skewnesses, and `std::acos` took a seventh of
-  /// its time; it only compares them.
+  /// optimization evaluates tens of millions of skewnesses, and `std::acos` would take a
+  /// seventh of its time; it only compares them.
   static double arc_cosine(double x)
   {
     const double t = (std::min)(1., std::abs(x));
@@ -252,7 +252,7 @@ public:
     valence_.assign(nv, 0);
     // A patch that touches itself (at a sample that its loop passes twice) has two images of one
     // chord's end: a diagonal from the other image to the chord's other end would be a second edge
-    // on the chord in the glued mesh (CGAL's femur, with frontal insertion).
+    // on the chord in the glued mesh (as with frontal insertion on CGAL's femur).
     const auto is_sample = [&](int v) { return std::size_t(v) < sample_ids_.size(); };
     if(!link_triangles(triangles_, neighbor_, [&](int a, int b, bool interior) {
          ++valence_[a];
@@ -371,10 +371,9 @@ public:
   /// star on the surface: the smoothing leaves the triangles around irregular vertices off the
   /// optimum. The search runs on the star's linear map (`star_jacobian()`), which costs no lift;
   /// its end point is then lifted and judged on the surface, and half of its step is tried when
-  /// that is refused. (Lifting every improving step of the search took 1.3 of the 2 seconds
-  /// the optimization of the shield of issue #7 took; the mean skewness of the paper's parts
-  /// moved by less than 0.0002 either way.) A vertex whose star has no such triangle is left
-  /// unsettled: a neighbour's move may make one.
+  /// that is refused. (Lifting every improving step of the search would take most of the
+  /// optimization's time on a CAD part, for no measurable gain in mean skewness.) A vertex
+  /// whose star has no such triangle is left unsettled: a neighbour's move may make one.
   std::size_t skewness_pass(double threshold)
   {
     return move_pass(SKEWNESS, [this, threshold](int v, const std::vector<int>& ring) -> Move_outcome {
@@ -547,8 +546,8 @@ public:
         v = index[v];
   }
 
-  /// From now on, no flip or move makes a chord that `bounds` names (see `split_pass()`), unless
-  /// it replaces one that stood farther off the surface.
+  /// After this call, no flip or move makes a chord that `bounds` names (see `split_pass()`),
+  /// unless it replaces one that stood farther off the surface.
   void keep_chords(const Edge_split_bounds& bounds) { kept_chords_ = bounds; }
 
   /// Raises the smallest surface angles below `target_degrees`: every interior edge of a
@@ -556,7 +555,7 @@ public:
   /// angles, and every free corner of one is moved by a compass search (on the star's linear
   /// map, as `skewness_pass()`) on the smallest angle of its star, which the lifted move must
   /// raise. The other passes go for the mean shape and leave a few triangles between the bound
-  /// and 30 degrees (0.2% on issue #7's suspension arm); here valences and skewness may get
+  /// and 30 degrees (0.2% on a large CAD part); here valences and skewness may get
   /// worse, but no angle below the target gets smaller. Returns the flips and moves made.
   std::size_t angle_pass(double target_degrees)
   {
@@ -661,7 +660,7 @@ private:
   // The rings of the vertices a move pass may move (free, interior, not settled for its kind), in
   // index order: the ring of `vertices[i]` is `neighbors[start[i]]` to `neighbors[start[i + 1]]`.
   // No flip happens during a pass, so each ring is walked once, for the classes, the moves and
-  // the stars to unsettle (three walks each before).
+  // the stars to unsettle.
   struct Pass_rings
   {
     std::vector<int> vertices;
@@ -753,7 +752,7 @@ private:
   // planar edges of its star to their surface edges (least squares). It predicts the surface move
   // of a small planar move well enough to skip, without lifting them, the moves that would not
   // lower the star's skewness: each lift walks back through the flow's flips (up to millions on
-  // CAD fans), and the optimization's lifts took most of the meshing stage of issue #7's arm.
+  // CAD fans), and on large CAD parts lifting every trial would be most of the meshing stage.
   // Every move made is still judged at its lifted point.
   struct Linear_map_2_3
   {
@@ -894,9 +893,8 @@ private:
   // Moves v to `moved` if its star stays positively oriented in the plane (exact predicate),
   // keeps the angle limit on the surface, makes no edge longer than the longest edge bound (or
   // than it was), its summed skewness drops below `energy` and it makes no chord the kept bounds
-  // name (see `keep_chords()`). (Unbounded moves stretched edges to 1.75 times the target on a
-  // spherical cap, and the largest triangles set the distance to the input: 1.4 times
-  // isotropic_remeshing's there, 1.18 with the bound.)
+  // name (see `keep_chords()`). (Unbounded moves stretch edges up to 1.75 times the target on a
+  // spherical cap, and the largest triangles set the distance to the input.)
   bool try_move(int v, const Point_2& moved, const std::vector<int>& ring, double limit, const Moving_star& star, double energy)
   {
     return try_move(v, moved, ring, limit, [&](const Point_3& x) { return star.skewness_sum(x) < energy; });
@@ -1074,9 +1072,8 @@ private:
   // Lifts, before a split pass and in parallel when the moves are, the planar midpoints of the
   // inner edges whose surface length `is_candidate` names and whose kept lift is out of date,
   // each from the side of its lower triangle, where the pass meets it first: the pass then finds
-  // them in lifted_midpoint(), with the same result. (The split passes were a fifth of the
-  // shark's optimization in a profile, mostly in lifted_midpoint(); 8 interleaved runs each: the
-  // fine cap's optimization 0.175 -> 0.163 s smallest, the shark's within the noise.)
+  // them in lifted_midpoint(), with the same result. (The split passes can be a fifth of the
+  // optimization, mostly in lifted_midpoint().)
   template <typename Is_candidate>
   void lift_midpoints_first(const Is_candidate& is_candidate)
   {
@@ -1103,7 +1100,7 @@ private:
   // The surface point of the planar midpoint of the edge opposite corner k of t, shared with
   // corner j of u. The split passes look at every edge from both sides, and again in each pass: the
   // point is lifted again only if an end of the edge moved (a lift walks back through the flow's
-  // flips; on the shark, five of six of these lifts were of a midpoint lifted before).
+  // flips, and most of these lifts are of a midpoint lifted before).
   Point_3 lifted_midpoint(int t, int k, int u, int j)
   {
     reserve_lifted_midpoints();
@@ -1269,8 +1266,9 @@ Surface_optimization_report optimize_on_surface(std::vector<Epick::Point_2>& poi
     phase_start = now;
   };
   // Each round: valence flips, then flips that improve shapes without hurting valences, then two
-  // smoothing passes; the skewness passes at the end polish what smoothing leaves. (Measured on
-  // CGAL's CAD-like models: rounds beyond 5 and a lower skewness threshold gain < 0.003.)
+  // smoothing passes; the skewness passes at the end polish what smoothing leaves. (On CGAL's
+  // CAD-like models, rounds beyond 5 and a lower skewness threshold gain less than 0.003 in mean
+  // skewness.)
   const auto flip_and_smooth = [&]() {
     report.flips += optimizer.flip_pass(Surface_mesh_optimizer<Lift>::VALENCE);
     report.flips += optimizer.flip_pass(Surface_mesh_optimizer<Lift>::SHAPE);
@@ -1281,10 +1279,9 @@ Surface_optimization_report optimize_on_surface(std::vector<Epick::Point_2>& poi
     flip_and_smooth();
   end_phase(report.seconds_first_rounds);
   // From the first split on, the rounds make no chord across a bend (the split passes after them
-  // catch the rest); keeping the long chords on tight curves too held back the smoothing of the
-  // elephant's scanned skin (mean skewness 0.119 -> 0.124). The skewness passes, with no split
-  // after them, keep both; the angle passes only the bends (keeping both, they left the elephant
-  // a triangle of 21.3 degrees, against 26.3).
+  // catch the rest); keeping the long chords on tight curves too would hold back the smoothing
+  // of scanned surfaces. The skewness passes, with no split after them, keep both; the angle
+  // passes only the bends (keeping both, they would leave smaller angles on scanned surfaces).
   Edge_split_bounds bends;
   bends.across_bend = split.across_bend;
   if(split.names_any())
@@ -1294,9 +1291,8 @@ Surface_optimization_report optimize_on_surface(std::vector<Epick::Point_2>& poi
     for(int round = 0; round < 2; ++round)
       flip_and_smooth();
     // The flips and moves after a split make new chords, some across a bend: split those too.
-    // (Remeshing benchmark, 2026-11-26: the elephant's distances to / from the input 1.04 / 1.03
-    // times isotropic_remeshing's with one split pass, 0.92 / 0.98 with these; four more passes
-    // instead of two split 7 more edges and moved no distance.)
+    // (On a scanned model this lowers the distances to and from the input by 5 to 10%; more
+    // passes split few more edges and change no distance.)
     for(int again = 0; again < 2; ++again)
     {
       const std::size_t splits = optimizer.split_pass(split, report.chord_splits);
@@ -1321,8 +1317,8 @@ Surface_optimization_report optimize_on_surface(std::vector<Epick::Point_2>& poi
   for(int pass = 0; pass < 3; ++pass)
     report.moves += optimizer.skewness_pass(0.12);
   end_phase(report.seconds_skewness_passes);
-  // Then the triangles below 30 degrees (the share that issue #7 counts against the peer), or
-  // below the bound where that is higher.
+  // Then the triangles below 30 degrees (a common threshold of mesh quality), or below the
+  // bound where that is higher.
   optimizer.keep_chords(bends);
   for(int pass = 0; pass < 3; ++pass)
     report.angle_changes += optimizer.angle_pass((std::max)(30., angle_bound_degrees));

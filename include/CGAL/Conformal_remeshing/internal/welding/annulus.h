@@ -93,7 +93,7 @@ inline Planar_annulus make_annulus(const std::vector<std::array<double, 2> >& ou
 
   // All at once, spatially sorted: inserted one by one in their order around the circle, every
   // new point is nearly cocircular with all the triangles before it and the flips cascade
-  // (1 s for the 16,724 points of a loop of issue #7's 316k suspension arm; 0.02 s so).
+  // (about 50 times slower for a loop of tens of thousands of points).
   CDT cdt;
   std::vector<std::pair<K::Point_2, int> > numbered;
   for(std::size_t i = 0; i < annulus.points.size(); ++i)

@@ -4,12 +4,12 @@
 // Replaces the faces of each large flat region of a patch by their constrained Delaunay
 // triangulation in the plane, before the intrinsic Delaunay flips. A CAD exporter's fan of
 // slivers on a planar face has all its vertices on the face's boundary, so the fan grows with
-// the mesh and Lawson's flips from it grow with its square (issue #7's growth runs: 92 million
-// flips at 316k vertices); a bend between two such faces, tessellated as a strip of slivers
+// the mesh and Lawson's flips from it grow with its square (about 90 million flips on a
+// 300k-vertex CAD part); a bend between two such faces, tessellated as a strip of slivers
 // spanning its length, is developable: unfolded, it joins the faces on either side in one plane
-// region (issue #7's chassis: 202 million steps of the pull-back's walks went back through the
-// flips between its bends and panels). In the plane the intrinsic Delaunay triangulation is the
-// constrained Delaunay one, which CGAL builds in O(n log n).
+// region (otherwise the pull-back's walks take hundreds of millions of steps back through the
+// flips between the bends and panels of a large CAD part). In the plane the intrinsic Delaunay
+// triangulation is the constrained Delaunay one, which CGAL builds in O(n log n).
 
 #ifndef CGAL_CONFORMAL_REMESHING_INTERNAL_WELDING_RETRIANGULATE_FLAT_REGIONS_H
 #define CGAL_CONFORMAL_REMESHING_INTERNAL_WELDING_RETRIANGULATE_FLAT_REGIONS_H
@@ -79,8 +79,8 @@ inline bool make_fans(Flat_region& region)
 // index; faces marked by `mark_constraint_depth()`), the points of a square grid of side
 // `spacing` inside the region, but none within a third of `spacing` of its boundary: the
 // intrinsic refinement would otherwise split the long edges of a planar CAD face's triangulation
-// (its vertices all on its outline) one at a time, two dozen flips each on the 87k suspension arm
-// of issue #7, and every point pulled back later walks back through those flips. The new vertices
+// (its vertices all on its outline) one at a time, with a couple of dozen flips each on a CAD
+// part, and every point pulled back later walks back through those flips. The new vertices
 // join `region` (patch indices from `first_index` on, with the original faces holding them);
 // returns their 3D points, on the original faces.
 template <typename CDT>

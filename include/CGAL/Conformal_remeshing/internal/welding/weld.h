@@ -378,8 +378,7 @@ struct Loop_fill
 /// loop's edges in the loop's order. No face when the projection is not a simple polygon.
 /// Without interior points a long loop's fill is all slivers between its vertices, which the
 /// flow then flips with the square of the loop's size as the conformal factors along it change
-/// (issue #7's growth runs: 0.87 million of the 1.0 million flips of a 100k suspension arm's
-/// patch were in its pockets' fills).
+/// (on a 100k-vertex CAD part, most of a patch's flips can be in the fills of its pockets).
 inline Loop_fill triangulate_loop_in_its_plane(const Indexed_patch& patch, const std::vector<int>& loop, const Vec3& centre,
                                                const Vec3& normal, double spacing, int first_new)
 {
@@ -522,12 +521,12 @@ inline Welded_disc weld(const Indexed_patch& patch, std::size_t welded, double i
         apex[k] += 0.5 * mean_radius * normal[k] / nn;
     // A cone whose fan is Delaunay fills the hole (a round hole's does). One that is not is far
     // from it on a long loop with straight runs (a pocket cut by a plane): Lawson's flips from it
-    // went round in circles among the nearly collinear loop vertices up to the flip cap, on
-    // every pass (3.1 of the 3.2 million flips of the first pass on a patch of issue #7's 100k
-    // suspension arm). Such a hole is filled by the constrained Delaunay triangulation of its
-    // polygon seen along its normal, when that polygon is simple (51 thousand flips there, and
-    // the patch flattens in 3.0 s instead of 5.5). (Polygon fills for round holes too changed
-    // the pulled-back triangles near small holes: 19.8 degrees in a chord-error run.)
+    // go round in circles among the nearly collinear loop vertices up to the flip cap, on every
+    // pass (millions of flips on a patch of a 100k-vertex CAD part). Such a hole is filled by the
+    // constrained Delaunay triangulation of its polygon seen along its normal, when that polygon
+    // is simple (tens of thousands of flips there instead, and the patch flattens almost twice as
+    // fast). (Round holes keep the cone: polygon fills for them too make worse pulled-back
+    // triangles near small holes.)
     const bool delaunay_cone = fan_is_delaunay(patch, loop, apex);
     const Loop_fill fill = delaunay_cone || loop.size() < 8 ? Loop_fill()
                                                             : triangulate_loop_in_its_plane(patch, loop, centre, normal, fill_spacing, next_vertex);

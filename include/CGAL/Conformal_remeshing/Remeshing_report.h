@@ -1,0 +1,150 @@
+// Copyright (c) 2026 CGAL Conformal Remeshing contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// What `remesh_conformal()` returns: the report of a run, and where each output vertex lies on
+// the input surface.
+
+#ifndef CGAL_CONFORMAL_REMESHING_REMESHING_REPORT_H
+#define CGAL_CONFORMAL_REMESHING_REMESHING_REPORT_H
+
+#include <CGAL/Conformal_remeshing/conformal_flatten.h>
+
+#include <array>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Conformal_remeshing {
+
+/// \ingroup PkgConformalRemeshingRef
+/// Where the meshing stage's time goes, in seconds summed over the patches (see
+/// `Remeshing_report::meshing_phases`). The first three add up to
+/// `Remeshing_report::seconds_planar_meshing`, the other six to
+/// `Remeshing_report::seconds_optimization` (wall seconds of each patch's optimization, whose
+/// vertex moves may run in parallel).
+struct Meshing_phase_seconds
+{
+  /// the planar meshing's set-up and output: the point locator in the flattening, the input
+  /// vertices kept, the seeds, the triangulation of the boundary samples and the numbering of
+  /// the output
+  double planar_setup = 0.;
+  /// the placement of the planar points: the frontal insertion (when `frontal_insertion` is on)
+  /// and CGAL's Delaunay refinement of the planar domain
+  double planar_refinement = 0.;
+  /// the smoothing in the plane, with the triangulation and refinement of the smoothed points
+  double planar_smoothing = 0.;
+  /// the optimization's set-up: the lifts of the planar points to the surface and the adjacency
+  double optimization_setup = 0.;
+  double first_rounds = 0.;    ///< its first rounds of flips and smoothing passes
+  double splits = 0.;          ///< its split passes and the rounds after them
+  double collapses = 0.;       ///< its collapse pass and the round after it
+  double skewness_passes = 0.; ///< its skewness passes
+  double angle_passes = 0.;    ///< its angle passes and the removal of the collapsed vertices
+
+  /// Calls `f(name, phase)` for each phase in the order above: `name` is the member's name (as in
+  /// the tools' JSON reports), `phase` a pointer to the member.
+  template <typename F>
+  static void for_each_phase(const F& f)
+  {
+    typedef Meshing_phase_seconds P;
+    f("planar_setup", &P::planar_setup);
+    f("planar_refinement", &P::planar_refinement);
+    f("planar_smoothing", &P::planar_smoothing);
+    f("optimization_setup", &P::optimization_setup);
+    f("first_rounds", &P::first_rounds);
+    f("splits", &P::splits);
+    f("collapses", &P::collapses);
+    f("skewness_passes", &P::skewness_passes);
+    f("angle_passes", &P::angle_passes);
+  }
+
+  Meshing_phase_seconds& operator+=(const Meshing_phase_seconds& other)
+  {
+    for_each_phase([&](const char*, double Meshing_phase_seconds::*phase) { this->*phase += other.*phase; });
+    return *this;
+  }
+};
+
+/// \ingroup PkgConformalRemeshingRef
+/// What `remesh_conformal()` did.
+struct Remeshing_report
+{
+  double target_edge_length = 0.;
+  std::size_t number_of_patches = 0;
+  std::size_t plane_cuts = 0;       ///< cuts by planes: given, and bisections of the segmentation
+  std::size_t patch_bisections = 0; ///< patches bisected because their flattening failed or stretched
+  std::size_t feature_edges = 0;    ///< sharp edges of the refined input
+  /// feature edges inside a patch rather than between two (the patch is slit open along them)
+  std::size_t dangling_feature_edges = 0;
+  /// the sharp features were dropped because a patch could not be flattened with them (see the
+  /// named parameter `features_fallback`); `features_fallback_reason` says why
+  bool features_dropped = false;
+  std::string features_fallback_reason;
+  /// the surface was meshed again with Delaunay refinement alone because the frontally placed
+  /// points did not mesh it (see the named parameter `frontal_insertion`);
+  /// `frontal_fallback_reason` says why
+  bool frontal_dropped = false;
+  std::string frontal_fallback_reason;
+  std::vector<Flattening_report> patches; ///< the flattening of each patch
+  int max_newton_iterations = 0;
+  double max_curvature_error = 0.;
+  std::size_t flips = 0;
+  /// faces of flat regions (developable or exactly coplanar) replaced by their constrained
+  /// Delaunay triangulation before the flips (`Flattening_report::retriangulated_faces`, summed)
+  std::size_t retriangulated_faces = 0;
+  double max_scale_ratio = 0.; ///< the largest ratio of the local scales in a patch
+  std::size_t boundary_curves = 0;
+  std::size_t boundary_samples = 0;
+  std::size_t refined_boundary_curves = 0; ///< times a boundary curve of a thin patch was sampled twice as densely
+  std::size_t split_diagonals = 0; ///< times a patch split an edge between two samples that another patch also has
+  std::size_t output_vertices = 0;
+  std::size_t output_faces = 0;
+  /// output vertices whose planar position fell outside the flat patch (between a boundary
+  /// chord and the boundary polyline) and were clamped onto the nearest patch triangle
+  std::size_t clamped_vertices = 0;
+  std::size_t optimization_flips = 0; ///< edge flips of the optimization on the surface
+  /// edges that the optimization split (one new vertex each): those longer than 1.26 times the
+  /// target on the surface, and those across bends (`optimization_chord_splits`)
+  std::size_t optimization_splits = 0;
+  /// of those, the edges whose chord's midpoint stood more than 0.15 times the target from the
+  /// surface point of their planar midpoint (edges of 0.9 times the target or longer)
+  std::size_t optimization_chord_splits = 0;
+  /// inner edges shorter than 0.7 times the target that the optimization collapsed after its
+  /// splits (one vertex fewer each; uniform sizing only)
+  std::size_t optimization_collapses = 0;
+  /// edge flips on the glued mesh: between boundary samples and at moved points for shape, then
+  /// of triangles below 30 degrees; mostly across the cuts between patches (if the output
+  /// intersects itself with them and the moves, they are made again without the moves, then
+  /// none are)
+  std::size_t flips_after_gluing = 0;
+  /// vertex moves on the glued mesh: samples of the cuts between patches and their neighbours,
+  /// moved on the input surface for shape (none if the output intersects itself with them)
+  std::size_t moves_after_gluing = 0;
+  /// rounds of meshing again with shorter edges where the output intersected itself (0 to 3).
+  /// The counts of the patches' meshing (`refined_boundary_curves`, `split_diagonals`,
+  /// `clamped_vertices`, `optimization_flips`, `optimization_splits`,
+  /// `optimization_chord_splits`, `optimization_collapses`) and the seconds add up over
+  /// all rounds; `flips_after_gluing` and `moves_after_gluing` are those of the output.
+  std::size_t self_intersection_refinements = 0;
+  /// wall-clock seconds of the stages (the flattening and meshing stages run patches in parallel)
+  double seconds_segmentation = 0., seconds_flattening = 0., seconds_meshing_stage = 0., seconds_gluing = 0.;
+  /// seconds summed over the patches (thread time; the optimization's vertex moves within a
+  /// patch run in parallel too, so `seconds_optimization` sums the patches' wall time)
+  double seconds_ricci_flow = 0., seconds_planar_meshing = 0., seconds_optimization = 0., seconds_pull_back = 0.;
+  /// the planar meshing's and the optimization's seconds by phase
+  Meshing_phase_seconds meshing_phases;
+};
+
+/// \ingroup PkgConformalRemeshingRef
+/// Where an output vertex lies on the input surface: an input face and barycentric coordinates
+/// (corner order of `CGAL::Polygon_mesh_processing::locate()`).
+struct Surface_location
+{
+  std::size_t input_face = 0;
+  std::array<double, 3> coordinates{{0., 0., 0.}};
+};
+} // namespace Conformal_remeshing
+} // namespace CGAL
+
+#endif // CGAL_CONFORMAL_REMESHING_REMESHING_REPORT_H

@@ -1,0 +1,153 @@
+// Copyright (c) 2026 CGAL Conformal Remeshing contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The meshing and gluing stages of `remesh_conformal()` and their escalation policy, in one place.
+// Defects that show only once the patches are glued are mended here, in this order:
+//  1. the output intersects itself where the input does not (two parts of the surface closer
+//     than the output's chords deviate from it): those places are meshed again with edges of half
+//     the target there, graded to the target by half the distance, then a quarter, up to
+//     `max_self_intersection_refinements` rounds; the flattenings are kept;
+//  2. with frontal insertion, should the frontally placed points still not mesh the surface (patches
+//     that do not glue, an output that intersects itself), the surface is meshed again by Delaunay
+//     refinement alone, with the same rounds.
+// The patch-local mending (denser boundary curves, split diagonals) is the meshing stage's own
+// (mesh_patches.h); improvements after gluing that make the output intersect itself are given up
+// by the gluing stage (glue_patches.h).
+
+#ifndef CGAL_CONFORMAL_REMESHING_INTERNAL_REMESHING_MESH_AND_GLUE_H
+#define CGAL_CONFORMAL_REMESHING_INTERNAL_REMESHING_MESH_AND_GLUE_H
+
+#include <CGAL/Conformal_remeshing/Error.h>
+#include <CGAL/Conformal_remeshing/Remeshing_report.h>
+#include <CGAL/Conformal_remeshing/internal/time_limit.h>
+#include <CGAL/Conformal_remeshing/internal/remeshing/glue_patches.h>
+#include <CGAL/Conformal_remeshing/internal/remeshing/mesh_patches.h>
+#include <CGAL/Conformal_remeshing/internal/remeshing/remeshing_options.h>
+#include <CGAL/Conformal_remeshing/internal/remeshing/segment_and_flatten.h>
+#include <CGAL/Conformal_remeshing/internal/remeshing/sizing.h>
+#include <CGAL/Conformal_remeshing/internal/remeshing/tuning.h>
+
+#include <chrono>
+#include <functional>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Conformal_remeshing {
+namespace internal {
+namespace remeshing {
+
+inline void add_meshing_statistics(const Meshed_patches& meshed, Remeshing_report& report)
+{
+  report.boundary_samples = meshed.samples.points.size();
+  report.boundary_curves = meshed.samples.number_of_curves;
+  for(const Remeshed_patch& r : meshed.remeshed)
+  {
+    report.seconds_planar_meshing += r.seconds_planar_meshing;
+    report.seconds_optimization += r.seconds_optimization;
+    report.seconds_pull_back += r.seconds_pull_back;
+    report.meshing_phases += r.phases;
+    report.optimization_flips += r.optimization.flips;
+    report.optimization_splits += r.optimization.splits;
+    report.optimization_chord_splits += r.optimization.chord_splits;
+    report.optimization_collapses += r.optimization.collapses;
+    report.clamped_vertices += r.clamped_vertices;
+  }
+}
+
+inline Error self_intersection_error(const std::vector<Epick::Point_3>& crossings)
+{
+  std::ostringstream where;
+  if(!crossings.empty())
+    where << " near (" << crossings.front().x() << ", " << crossings.front().y() << ", " << crossings.front().z() << ")";
+  return Error(Error_code::NOT_AN_EMBEDDING,
+               "remesh_conformal: the remeshed patches intersect each other" + where.str()
+                 + ", where the input does not intersect itself, even with edges of 1/"
+                 + std::to_string(1 << max_self_intersection_refinements)
+                 + " of the target there: two parts of the surface come closer there than the output's chords deviate from it "
+                   "(nearly touching sheets; a smaller target edge length may help), or false sharp features cut a bent surface "
+                   "into many patches (features_angle(0) may help)");
+}
+
+/// The patches of `surface` meshed and glued with `meshing`, meshed again finer where the output
+/// intersects itself (policy 1 above).
+/// \throws Error with `Error_code::NOT_AN_EMBEDDING` when it still does after the last round.
+template <typename ConcurrencyTag, typename TriangleMesh, typename Progress>
+Glued_output<TriangleMesh> mesh_and_glue(const Flattened_surface& surface, const Remeshing_options& options,
+                                         const Patch_meshing& meshing, const std::function<bool()>& input_self_intersects,
+                                         const Time_limit& time_limit, const Progress& progress, Remeshing_report& report)
+{
+  typedef std::chrono::steady_clock Clock;
+  const auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
+  const double h = options.target_edge_length;
+  std::vector<Epick::Point_3> crossings; // centroids of intersecting triangles, a quarter target apart
+  for(int refinement = 0;; ++refinement)
+  {
+    Clock::time_point start = Clock::now();
+    progress("meshing " + std::to_string(surface.flattened.patches.size()) + " patches");
+    const Sizing sizing(surface.segmentation, h,
+                        crossings.empty() ? options.sizing_field : shorter_near(options.sizing_field, crossings, h / double(1 << refinement)),
+                        options.maximum_chord_error);
+    const Meshed_patches meshed =
+      mesh_patches_on_shared_samples<ConcurrencyTag>(surface, sizing, options.corner_angle, meshing, time_limit, progress, report);
+    report.seconds_meshing_stage += seconds_since(start);
+    add_meshing_statistics(meshed, report);
+
+    start = Clock::now();
+    progress("gluing");
+    Glued_output<TriangleMesh> glued = glue_patches<ConcurrencyTag, TriangleMesh>(
+      meshed, surface.segmentation, sizing, options.minimum_angle, input_self_intersects, report);
+    report.seconds_gluing += seconds_since(start);
+    if(!glued.intersects)
+      return glued;
+    if(refinement == max_self_intersection_refinements || glued.crossings.empty())
+      throw self_intersection_error(glued.crossings);
+    const std::size_t known = crossings.size();
+    for(const Epick::Point_3& c : glued.crossings)
+      add_if_far(crossings, c, 0.25 * h);
+    report.self_intersection_refinements = std::size_t(refinement) + 1;
+    progress("the output intersects itself at " + std::to_string(glued.crossings.size() / 2) + " pairs of triangles ("
+             + std::to_string(crossings.size() - known) + " new places): meshing again with edges of 1/"
+             + std::to_string(1 << (refinement + 1)) + " of the target there");
+  }
+}
+
+/// `mesh_and_glue()` with the options' point placement, then by Delaunay refinement alone should
+/// frontal insertion not mesh the surface (policy 2 above).
+template <typename ConcurrencyTag, typename TriangleMesh, typename Progress>
+Glued_output<TriangleMesh> mesh_and_glue_with_fallback(const Flattened_surface& surface, const Remeshing_options& options,
+                                                       const std::function<bool()>& input_self_intersects,
+                                                       const Time_limit& time_limit, const Progress& progress,
+                                                       Remeshing_report& report)
+{
+  Patch_meshing meshing;
+  meshing.minimum_angle = options.minimum_angle;
+  meshing.smoothing = options.smoothing;
+  meshing.frontal = options.frontal;
+  meshing.optimization_rounds = options.optimization_rounds;
+  meshing.moves_in_parallel = std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value;
+  try
+  {
+    return mesh_and_glue<ConcurrencyTag, TriangleMesh>(surface, options, meshing, input_self_intersects, time_limit, progress, report);
+  }
+  catch(const Error& e)
+  {
+    if(!options.frontal.is_on() || e.code() != Error_code::NOT_AN_EMBEDDING)
+      throw;
+    report.frontal_dropped = true;
+    report.frontal_fallback_reason = without_caller(e.what());
+    progress("the frontally placed points do not mesh the surface (" + report.frontal_fallback_reason
+             + "): meshing again with Delaunay refinement alone");
+    meshing.frontal = Frontal_insertion();
+    meshing.smoothing = options.refinement_smoothing;
+    return mesh_and_glue<ConcurrencyTag, TriangleMesh>(surface, options, meshing, input_self_intersects, time_limit, progress, report);
+  }
+}
+
+} // namespace remeshing
+} // namespace internal
+} // namespace Conformal_remeshing
+} // namespace CGAL
+
+#endif // CGAL_CONFORMAL_REMESHING_INTERNAL_REMESHING_MESH_AND_GLUE_H

@@ -1,0 +1,422 @@
+// Copyright (c) 2026 CGAL Conformal Remeshing contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// One patch of the pipeline meshed: its flattening's planar domain meshed on the shared boundary
+// samples (frontal insertion, then Delaunay refinement), optimized on the surface, and pulled
+// back onto the input surface through the flow's correspondence.
+
+#ifndef CGAL_CONFORMAL_REMESHING_INTERNAL_REMESHING_MESH_PATCH_H
+#define CGAL_CONFORMAL_REMESHING_INTERNAL_REMESHING_MESH_PATCH_H
+
+#include <CGAL/Conformal_remeshing/Error.h>
+#include <CGAL/Conformal_remeshing/Remeshing_report.h>
+#include <CGAL/Conformal_remeshing/conformal_flatten.h>
+#include <CGAL/Conformal_remeshing/internal/remeshing/boundary_curves.h>
+#include <CGAL/Conformal_remeshing/internal/remeshing/kept_input_vertices.h>
+#include <CGAL/Conformal_remeshing/internal/remeshing/planar_locator.h>
+#include <CGAL/Conformal_remeshing/internal/remeshing/planar_mesher.h>
+#include <CGAL/Conformal_remeshing/internal/remeshing/sizing.h>
+#include <CGAL/Conformal_remeshing/internal/remeshing/surface_optimization.h>
+#include <CGAL/Conformal_remeshing/internal/remeshing/tuning.h>
+
+#include <CGAL/Spatial_sort_traits_adapter_2.h>
+#include <CGAL/property_map.h>
+#include <CGAL/spatial_sort.h>
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <limits>
+#include <map>
+#include <numeric>
+#include <set>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Conformal_remeshing {
+namespace internal {
+namespace remeshing {
+
+// The surface point of every vertex of the flat triangulation. A patch vertex has its own point;
+// a vertex that the refinement inserted is mapped once through the correspondence (mapping every
+// triangle corner back through the flips instead costs millions of lifts on a CAD fan).
+inline std::vector<Epick::Point_3> vertex_surface_points(const Conformal_flattening& flat)
+{
+  std::vector<Epick::Point_3> point(flat.layout.size());
+  std::vector<char> known(flat.layout.size(), 0);
+  for(std::size_t v = 0; v < (std::min)(flat.patch.points.size(), point.size()); ++v)
+  {
+    const internal::welding::Vec3& x = flat.patch.points[v];
+    point[v] = Epick::Point_3(x[0], x[1], x[2]);
+    known[v] = 1;
+  }
+  for(std::size_t t = 0; t < flat.triangles.size(); ++t)
+    for(int c = 0; c < 3; ++c)
+      if(!known[flat.triangles[t][c]])
+      {
+        std::array<double, 3> b{{0., 0., 0.}};
+        b[c] = 1.;
+        point[flat.triangles[t][c]] = flat.surface_point(t, b);
+        known[flat.triangles[t][c]] = 1;
+      }
+  return point;
+}
+
+// The local scale of the map (planar length over surface length) at the vertices of the flat
+// triangulation, averaged over their triangles: the factor that turns a target length on the surface into one in
+// the plane.
+inline std::vector<double> local_scale(const Conformal_flattening& flat)
+{
+  const std::vector<Epick::Point_3> point = vertex_surface_points(flat);
+  std::vector<double> scale(flat.layout.size(), 0.), weight(flat.layout.size(), 0.);
+  for(const std::array<int, 3>& triangle : flat.triangles)
+  {
+    double planar = 0., spatial = 0.;
+    for(int c = 0; c < 3; ++c)
+    {
+      const int v = triangle[c], w = triangle[(c + 1) % 3];
+      planar += std::sqrt(CGAL::squared_distance(flat.layout[v], flat.layout[w]));
+      spatial += std::sqrt(CGAL::squared_distance(point[v], point[w]));
+    }
+    for(int v : triangle)
+    {
+      scale[v] += planar / spatial;
+      weight[v] += 1.;
+    }
+  }
+  for(std::size_t v = 0; v < scale.size(); ++v)
+    if(weight[v] > 0.)
+      scale[v] /= weight[v];
+  return scale;
+}
+// One patch, remeshed: its boundary samples (indices into the curve samples), its interior
+// points on the surface, and triangles whose corners index the boundary samples first, then
+// the interior points.
+struct Remeshed_patch
+{
+  std::vector<std::size_t> boundary_ids;
+  std::vector<Epick::Point_3> interior_points;
+  std::vector<Poly_annulus_segmentation::Face> interior_faces; // the segmented face of each
+  std::vector<std::array<std::size_t, 3> > triangles;
+  /// boundary chords (pairs of sample indices) the triangles would not glue at (see `check_glue()`):
+  /// the triangles are not valid then
+  std::vector<std::pair<std::size_t, std::size_t> > chords_not_glued;
+  /// other edges between two samples (smaller index first, once per planar edge), which no other
+  /// patch, nor another edge of this one, may join
+  std::vector<std::pair<std::size_t, std::size_t> > sample_diagonals;
+  std::size_t clamped_vertices = 0;
+  Surface_optimization_report optimization;
+  double seconds_planar_meshing = 0., seconds_optimization = 0., seconds_pull_back = 0.;
+  Meshing_phase_seconds phases; // of the planar meshing and the optimization
+};
+
+// The glue's preconditions, for one patch: every chord between consecutive samples of a loop is
+// an edge of one planar triangle, traversed in the loop's direction, so that the neighbour, which
+// traverses it the other way, closes the surface there; and no other edge joins the two samples
+// of a chord (a diagonal between two samples that the patch touches elsewhere would make a third
+// triangle on that chord). Where a patch is thinner than the sample spacing, a chord of one side
+// can cross the other side in the plane. The offending chords are returned, as pairs of sample
+// indices in `samples`, for their curves to be sampled more densely. Also returned: the other
+// edges between two samples, diagonals across the patch, which no second patch may have (four
+// triangles on one edge): see `remesh_conformal()`.
+struct Glue_check
+{
+  std::vector<std::pair<std::size_t, std::size_t> > chords_not_glued, sample_diagonals;
+};
+
+inline Glue_check check_glue(const std::vector<std::vector<Boundary_sample> >& loops, const Planar_mesh& planar,
+                             const std::vector<std::size_t>& boundary_ids, const Curve_samples& samples)
+{
+  std::set<std::pair<std::size_t, std::size_t> > loop_chords;
+  std::size_t first = 0;
+  for(const auto& loop : loops)
+  {
+    for(std::size_t i = 0; i < loop.size(); ++i)
+      loop_chords.emplace(first + i, first + (i + 1) % loop.size());
+    first += loop.size();
+  }
+  std::set<std::pair<std::size_t, std::size_t> > followed, not_glued, local_diagonals;
+  for(const auto& t : planar.triangles)
+    for(int c = 0; c < 3; ++c)
+    {
+      const std::pair<std::size_t, std::size_t> edge(t[c], t[(c + 1) % 3]);
+      if(loop_chords.count(edge))
+        followed.insert(edge);
+      else if(edge.first < planar.number_of_samples && edge.second < planar.number_of_samples
+              && !loop_chords.count({edge.second, edge.first}))
+      {
+        const auto pair = std::minmax(boundary_ids[edge.first], boundary_ids[edge.second]);
+        if(samples.curve_of_chord.count(pair))
+          not_glued.insert(pair);
+        else
+          local_diagonals.insert(std::minmax(edge.first, edge.second));
+      }
+    }
+  for(const auto& chord : loop_chords)
+    if(!followed.count(chord))
+      not_glued.insert(std::minmax(boundary_ids[chord.first], boundary_ids[chord.second]));
+  Glue_check result;
+  result.chords_not_glued.assign(not_glued.begin(), not_glued.end());
+  // Once per planar edge: a patch that meets itself (at a slit) can have the same pair twice.
+  for(const auto& d : local_diagonals)
+    result.sample_diagonals.push_back(std::minmax(boundary_ids[d.first], boundary_ids[d.second]));
+  return result;
+}
+
+// The plane-to-surface map of a flattened patch. Each lift locates its point among the flat
+// triangles by a walk, from where a point lifted before close by was found, then carries it back
+// through the flow's flips. Where points were found is remembered in a small direct-mapped
+// table of the last lifts (a point whose entry was overwritten starts from the last point's
+// triangle: a longer walk, the same answer); a memory of every lift costs more in lookups than
+// it saves in walks. (The optimizer keeps a hint per vertex instead of this table: see its lift
+// in remesh_flattened_patch().)
+class Surface_map_with_hints
+{
+public:
+  struct Lifted
+  {
+    Conformal_flattening::Patch_location on_patch;
+    bool clamped;         // outside every flat triangle by rounding, moved onto the nearest one
+    std::size_t triangle; // the flat triangle it was found in
+  };
+
+  Surface_map_with_hints(const Conformal_flattening& flat, const Planar_locator& locator)
+    : flat_(flat), locator_(locator), found_(std::size_t(1) << found_bits)
+  {}
+
+  /// The lift of `p`; `near` (optional) is a point lifted before close to `p`.
+  Lifted lift(const Epick::Point_2& p, const Epick::Point_2* near = nullptr)
+  {
+    if(near != nullptr)
+    {
+      const Found& f = found_[slot(*near)];
+      if(f.x == near->x() && f.y == near->y())
+        hint_ = f.triangle;
+    }
+    const Planar_locator::Location l = locator_.locate(p, hint_);
+    found_[slot(p)] = Found{p.x(), p.y(), l.triangle};
+    return Lifted{flat_.patch_location_of_triangle(l.triangle, l.coordinates),
+                  (std::min)({l.coordinates[0], l.coordinates[1], l.coordinates[2]}) == 0., l.triangle};
+  }
+
+private:
+  struct Found
+  {
+    double x = std::numeric_limits<double>::quiet_NaN(), y = 0.; // NaN: no point yet
+    std::size_t triangle = 0;
+  };
+  static constexpr int found_bits = 12; // 4096 entries, 96 kB
+  static std::size_t slot(const Epick::Point_2& p) { return std::size_t(planar_point_hash(p.x(), p.y()) >> (64 - found_bits)); }
+
+  const Conformal_flattening& flat_;
+  const Planar_locator& locator_;
+  std::vector<Found> found_;
+  std::size_t hint_ = Planar_locator::no_hint; // the last point's triangle: lifts come in neighbourhoods
+};
+
+// The refinement's size bound at a planar point: `longest_edge_factor` times the target edge
+// length on the surface there times the map's scale there. Takes a hint, the flat triangle to
+// search from (see `size_field_at()`); asked without one, it searches from where the last such
+// query was found.
+class Planar_size_field
+{
+public:
+  Planar_size_field(const Conformal_flattening& flat, const std::vector<double>& scale, const Extracted_patch& patch,
+                    const Sizing& sizing, const Planar_locator& locator)
+    : flat_(flat), scale_(scale), patch_(patch), sizing_(sizing), locator_(locator)
+  {}
+
+  /// The target edge length at `p` on the surface, and the map's scale there.
+  std::pair<double, double> size_and_scale(const Epick::Point_2& p, Size_field_hint& hint) const
+  {
+    const Planar_locator::Location l = locator_.locate(p, hint);
+    double s = 0.;
+    for(int c = 0; c < 3; ++c)
+      s += l.coordinates[c] * scale_[flat_.triangles[l.triangle][c]];
+    double size = sizing_.target();
+    if(!sizing_.is_uniform())
+    {
+      const Domain_point q = flat_.to_surface(l.triangle, l.coordinates);
+      size = sizing_.at(q.point, patch_.segmented_face[q.input_face]);
+    }
+    return std::make_pair(size, s);
+  }
+
+  double operator()(const Epick::Point_2& p, Size_field_hint& hint) const
+  {
+    const std::pair<double, double> size = size_and_scale(p, hint);
+    return longest_edge_factor * size.first * size.second;
+  }
+
+  double operator()(const Epick::Point_2& p) const { return (*this)(p, last_hint_); }
+
+private:
+  const Conformal_flattening& flat_;
+  const std::vector<double>& scale_;
+  const Extracted_patch& patch_;
+  const Sizing& sizing_;
+  const Planar_locator& locator_;
+  mutable Size_field_hint last_hint_ = no_size_field_hint;
+};
+
+// Planar Delaunay refinement of a flattened patch with the shared boundary samples, then the
+// pull-back of the new points onto the surface through the flow's correspondence.
+// No edge joins the two samples of a pair in `diagonals_to_split` (sample indices, smaller first).
+// The optimization's vertex moves run in parallel with `moves_in_parallel`, with the same result.
+inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, const std::vector<double>& scale,
+                                             const Extracted_patch& patch,
+                                             const Curve_samples& samples, const Sizing& sizing, double min_angle,
+                                             const Planar_smoothing& smoothing, const Frontal_insertion& frontal,
+                                             int optimization_rounds,
+                                             const std::set<std::pair<std::size_t, std::size_t> >& diagonals_to_split = {},
+                                             bool moves_in_parallel = false)
+{
+  typedef std::chrono::steady_clock Clock;
+  Clock::time_point start = Clock::now();
+  Remeshed_patch result;
+  const Planar_locator locator(flat.layout, flat.triangles);
+  const Planar_size_field planar_size(flat, scale, patch, sizing, locator);
+  std::vector<std::vector<Boundary_sample> > loops;
+  loops.push_back(loop_samples(flat.outer_boundary, patch, samples, result.boundary_ids));
+  for(const auto& hole : flat.holes)
+    loops.push_back(loop_samples(hole, patch, samples, result.boundary_ids));
+  std::vector<std::pair<std::size_t, std::size_t> > local_diagonals_to_split;
+  if(!diagonals_to_split.empty())
+  {
+    std::map<std::size_t, std::vector<std::size_t> > positions; // a slit's samples are on two sides
+    for(std::size_t i = 0; i < result.boundary_ids.size(); ++i)
+      positions[result.boundary_ids[i]].push_back(i);
+    for(const auto& pair : diagonals_to_split)
+      if(positions.count(pair.first) && positions.count(pair.second))
+        for(std::size_t i : positions[pair.first])
+          for(std::size_t j : positions[pair.second])
+            local_diagonals_to_split.emplace_back(i, j);
+  }
+  // The tips of a coarse input are kept as vertices (see kept_input_vertices.h).
+  std::vector<Epick::Point_3> sample_points;
+  for(const auto& loop : loops)
+    for(const Boundary_sample& s : loop)
+      sample_points.push_back(s.point);
+  std::vector<Epick::Point_2> fixed_points;
+  std::vector<std::pair<Epick::Point_2, Epick::Point_3> > tips;
+  for(std::size_t v : kept_input_vertices(patch, sizing.target(), kept_tip_tolerance, sample_points))
+  {
+    fixed_points.push_back(flat.uv[v]);
+    tips.emplace_back(flat.uv[v], patch.mesh.point(Extracted_patch::Mesh::Vertex_index(Extracted_patch::Mesh::size_type(v))));
+  }
+  // The first rows of triangles along features, borders and user patch borders are seeded (see
+  // equilateral_seeds()); along cuts the points move after gluing instead (moves_after_gluing.h).
+  // So is the first ring around each kept tip (see seeds_around_points()).
+  Surface_map_with_hints surface_map(flat, locator);
+  const auto on_kept_curve = [&](const Boundary_sample& a, const Boundary_sample& b) { return samples.is_kept_chord(a.id, b.id); };
+  const auto surface_point = [&](const Epick::Point_2& p, Epick::Point_3& x) {
+    const Surface_map_with_hints::Lifted lifted = surface_map.lift(p);
+    x = flat.surface_point(lifted.on_patch);
+    return !lifted.clamped;
+  };
+  std::vector<Planar_seed> seeds = equilateral_seeds(loops, on_kept_curve, surface_point, seed_layers);
+  Size_field_hint tip_hint = no_size_field_hint;
+  const auto target_lengths = [&](const Epick::Point_2& p) {
+    const std::pair<double, double> size = planar_size.size_and_scale(p, tip_hint);
+    return std::make_pair(size.first, size.first * size.second);
+  };
+  for(const Planar_seed& seed : seeds_around_points(tips, target_lengths, surface_point))
+    seeds.push_back(seed);
+  Planar_mesh planar = mesh_planar_domain<Epick>(loops, (std::min)(min_angle, planar_refinement_angle_bound), planar_size,
+                                                 smoothing, false, local_diagonals_to_split, fixed_points, seeds, frontal);
+  if(planar.number_of_samples != result.boundary_ids.size())
+    throw Error(Error_code::NOT_AN_EMBEDDING, "remesh_conformal: the boundary samples of a patch overlap in the plane");
+  result.seconds_planar_meshing = std::chrono::duration<double>(Clock::now() - start).count();
+  result.phases.planar_refinement = planar.seconds_refinement;
+  result.phases.planar_smoothing = planar.seconds_smoothing;
+  result.phases.planar_setup = result.seconds_planar_meshing - planar.seconds_refinement - planar.seconds_smoothing;
+  result.chords_not_glued = check_glue(loops, planar, result.boundary_ids, samples).chords_not_glued;
+  if(!result.chords_not_glued.empty())
+    return result;
+
+  // Flips and moves judged on the surface (see surface_optimization.h). The surface positions are
+  // the optimizer's working state only: the pull-back below finds the final points' input faces.
+  // The refinement numbers its points in the order it inserted them, worst triangle first: lifted
+  // in that order, each walk would start far from its point. (Sorted again for the pull-back: the
+  // optimization moves points and adds some.)
+  const auto interior_points_in_space_order = [&planar]() {
+    std::vector<std::size_t> order(planar.points.size() - planar.number_of_samples);
+    std::iota(order.begin(), order.end(), planar.number_of_samples);
+    const auto point_of_index = CGAL::make_property_map(planar.points);
+    CGAL::spatial_sort(order.begin(), order.end(), CGAL::Spatial_sort_traits_adapter_2<Epick, decltype(point_of_index)>(point_of_index));
+    return order;
+  };
+  start = Clock::now();
+  if(optimization_rounds > 0)
+  {
+    // No state but the hint, which each vertex keeps (see Surface_mesh_optimizer): the moves of
+    // a pass may call it from several threads at once.
+    const auto lift = [&](const Epick::Point_2& p, std::size_t& hint) {
+      const Planar_locator::Location l = locator.locate(p, hint);
+      return flat.surface_point(l.triangle, l.coordinates);
+    };
+    std::vector<Epick::Point_3> positions(sample_points); // the samples, in loop order, first
+    positions.resize(planar.points.size());
+    std::vector<std::size_t> hints(planar.points.size(), Planar_locator::no_hint); // where each was found
+    for(std::size_t i : interior_points_in_space_order())
+    {
+      const Surface_map_with_hints::Lifted lifted = surface_map.lift(planar.points[i]);
+      positions[i] = flat.surface_point(lifted.on_patch);
+      hints[i] = lifted.triangle;
+    }
+    Edge_split_bounds split_bounds;
+    split_bounds.longest = split_edge_factor * sizing.target();
+    split_bounds.across_bend = {shortest_off_surface_split_factor * sizing.target(), off_surface_split_factor * sizing.target()};
+    split_bounds.tight_curve = {shortest_tight_curve_split_factor * sizing.target(), tight_curve_split_factor * sizing.target()};
+    result.optimization =
+      optimize_on_surface(planar.points, positions, planar.triangles, planar.number_of_fixed_points, lift, min_angle,
+                          longest_edge_factor * sizing.target(), split_bounds, optimization_rounds,
+                          result.boundary_ids, diagonals_to_split, moves_in_parallel,
+                          sizing.is_uniform() ? collapse_edge_factor * sizing.target() : 0., hints);
+  }
+  result.seconds_optimization = std::chrono::duration<double>(Clock::now() - start).count();
+  {
+    const Surface_optimization_report& o = result.optimization;
+    Meshing_phase_seconds& phases = result.phases;
+    phases.first_rounds = o.seconds_first_rounds;
+    phases.splits = o.seconds_splits;
+    phases.collapses = o.seconds_collapses;
+    phases.skewness_passes = o.seconds_skewness_passes;
+    phases.angle_passes = o.seconds_angle_passes;
+    phases.optimization_setup = result.seconds_optimization - (phases.first_rounds + phases.splits + phases.collapses
+                                                               + phases.skewness_passes + phases.angle_passes);
+  }
+  // The optimizer keeps every chord (it never flips a boundary edge) and makes none of the
+  // diagonals to split, but it may have made or removed others.
+  result.sample_diagonals = check_glue(loops, planar, result.boundary_ids, samples).sample_diagonals;
+
+  start = Clock::now();
+  result.interior_points.resize(planar.points.size() - planar.number_of_samples);
+  result.interior_faces.resize(result.interior_points.size());
+  for(std::size_t i : interior_points_in_space_order())
+  {
+    const Surface_map_with_hints::Lifted lifted = surface_map.lift(planar.points[i]);
+    const Domain_point q = flat.to_surface(lifted.on_patch);
+    result.clamped_vertices += lifted.clamped;
+    result.interior_points[i - planar.number_of_samples] = q.point;
+    result.interior_faces[i - planar.number_of_samples] = patch.segmented_face[q.input_face];
+  }
+  for(const auto& t : planar.triangles)
+  {
+    std::array<std::size_t, 3> corners;
+    for(int c = 0; c < 3; ++c)
+      corners[c] = std::size_t(t[c]) < planar.number_of_samples ? result.boundary_ids[t[c]]
+                                                                  : samples.points.size() + (t[c] - planar.number_of_samples);
+    result.triangles.push_back(corners);
+  }
+  result.seconds_pull_back = std::chrono::duration<double>(Clock::now() - start).count();
+  return result;
+}
+} // namespace remeshing
+} // namespace internal
+} // namespace Conformal_remeshing
+} // namespace CGAL
+
+#endif // CGAL_CONFORMAL_REMESHING_INTERNAL_REMESHING_MESH_PATCH_H

@@ -1,0 +1,124 @@
+// Copyright (c) 2026 CGAL Conformal Remeshing contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The segmentation and flattening stage of `remesh_conformal()`: the input cut into poly-annuli,
+// every patch flattened (bisected where it fails or stretches too much), and the local scale of
+// every flattening. What it returns, the later stages read and never change.
+
+#ifndef CGAL_CONFORMAL_REMESHING_INTERNAL_REMESHING_SEGMENT_AND_FLATTEN_H
+#define CGAL_CONFORMAL_REMESHING_INTERNAL_REMESHING_SEGMENT_AND_FLATTEN_H
+
+#include <CGAL/Conformal_remeshing/Error.h>
+#include <CGAL/Conformal_remeshing/Remeshing_report.h>
+#include <CGAL/Conformal_remeshing/flatten_poly_annuli.h>
+#include <CGAL/Conformal_remeshing/parameters.h>
+#include <CGAL/Conformal_remeshing/segment_into_poly_annuli.h>
+#include <CGAL/Conformal_remeshing/internal/parallel_for_each_index.h>
+#include <CGAL/Conformal_remeshing/internal/time_limit.h>
+#include <CGAL/Conformal_remeshing/internal/remeshing/mesh_patch.h>
+#include <CGAL/Conformal_remeshing/internal/remeshing/remeshing_options.h>
+
+#include <algorithm>
+#include <chrono>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Conformal_remeshing {
+namespace internal {
+namespace remeshing {
+
+/// The input cut into flattened patches.
+struct Flattened_surface
+{
+  Poly_annulus_segmentation segmentation; ///< with the bisections of the patches that failed
+  Flattened_poly_annuli flattened;
+  std::vector<std::vector<double> > scales; ///< the local scale of each flattening (see `local_scale()`)
+};
+
+inline std::string without_caller(const std::string& message)
+{
+  const std::string caller = "remesh_conformal: "; // the start of the flattening's messages
+  return message.compare(0, caller.size(), caller) == 0 ? message.substr(caller.size()) : message;
+}
+
+inline void add_flattening_statistics(const Flattened_surface& surface, Remeshing_report& report)
+{
+  report.patch_bisections = surface.flattened.bisections;
+  report.number_of_patches = surface.flattened.patches.size();
+  report.plane_cuts = surface.segmentation.plane_cuts;
+  report.feature_edges = surface.segmentation.feature_edges;
+  report.dangling_feature_edges = surface.segmentation.dangling_feature_edges;
+  for(const Conformal_flattening& flat : surface.flattened.flattenings)
+  {
+    const Flattening_report& r = flat.report;
+    report.max_newton_iterations = (std::max)(report.max_newton_iterations, r.iterations);
+    report.max_curvature_error = (std::max)(report.max_curvature_error, r.curvature_error);
+    report.flips += r.flips;
+    report.retriangulated_faces += r.retriangulated_faces;
+    report.max_scale_ratio = (std::max)(report.max_scale_ratio, r.max_scale / r.min_scale);
+    report.seconds_ricci_flow += r.seconds_flow;
+    report.patches.push_back(r);
+  }
+}
+
+/// Segments `input` and flattens its patches into `result` (an output parameter: a segmentation
+/// is not copied). The segmentation takes its parameters from `np`;
+/// the flow resolves the map at twice the target edge length unless `np` says otherwise (finer on
+/// tubes: see `flow_edge_length()`), and snaps to cutting planes within a tenth of it.
+///
+/// When a patch cannot be flattened even after bisection and the segmentation has sharp features,
+/// the surface is segmented again without them if `options.features_fallback` is on: features
+/// taken from noise bound patches that the bisections cannot flatten with a bounded scale, while
+/// without them the patches are the surface's own. The report says so.
+template <typename ConcurrencyTag, typename TriangleMesh, typename NamedParameters, typename Progress>
+void segment_and_flatten(const TriangleMesh& input, const Remeshing_options& options, const NamedParameters& np,
+                         const Time_limit& time_limit, const Progress& progress, Remeshing_report& report, Flattened_surface& result)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef std::chrono::steady_clock Clock;
+  const double h = options.target_edge_length;
+  const double snap = choose_parameter(get_parameter(np, internal_np::snap_distance), 0.1 * h);
+  const double flow_length = choose_parameter(get_parameter(np, internal_np::maximum_edge_length), 2. * h);
+  Clock::time_point start;
+  const auto run = [&](const auto& segmentation_parameters) {
+    start = Clock::now();
+    progress("segmenting into poly-annuli");
+    segment_into_poly_annuli(input, result.segmentation, segmentation_parameters);
+    report.seconds_segmentation += std::chrono::duration<double>(Clock::now() - start).count();
+    time_limit.check("after the segmentation");
+    start = Clock::now();
+    flatten_poly_annuli<ConcurrencyTag>(result.segmentation, result.flattened,
+                                        parameters::maximum_edge_length(flow_length, parameters::snap_distance(snap, np)),
+                                        time_limit, "remesh_conformal");
+    report.seconds_flattening += std::chrono::duration<double>(Clock::now() - start).count();
+  };
+  try
+  {
+    run(parameters::snap_distance(snap, np));
+  }
+  catch(const Error& e)
+  {
+    if(e.code() == Error_code::TIME_LIMIT_EXCEEDED || result.segmentation.feature_edges == 0 || !options.features_fallback)
+      throw;
+    report.seconds_flattening += std::chrono::duration<double>(Clock::now() - start).count();
+    report.features_dropped = true;
+    report.features_fallback_reason = without_caller(e.what());
+    progress("no flattening with the " + std::to_string(result.segmentation.feature_edges) + " sharp feature edges ("
+             + report.features_fallback_reason + "): segmenting again without them");
+    run(parameters::features_angle(0., parameters::snap_distance(snap, np)));
+  }
+  add_flattening_statistics(result, report);
+
+  const std::vector<Conformal_flattening>& flattenings = result.flattened.flattenings;
+  result.scales.resize(flattenings.size());
+  for_each_index<ConcurrencyTag>(flattenings.size(), [&](std::size_t p) { result.scales[p] = local_scale(flattenings[p]); });
+}
+
+} // namespace remeshing
+} // namespace internal
+} // namespace Conformal_remeshing
+} // namespace CGAL
+
+#endif // CGAL_CONFORMAL_REMESHING_INTERNAL_REMESHING_SEGMENT_AND_FLATTEN_H
