@@ -12,7 +12,7 @@
 #ifndef CGAL_CONFORMAL_REMESHING_INTERNAL_WELL_SHAPED_COVER_H
 #define CGAL_CONFORMAL_REMESHING_INTERNAL_WELL_SHAPED_COVER_H
 
-#include <CGAL/Conformal_remeshing/internal/welding/constrained_domain.h>
+#include <CGAL/Conformal_remeshing/internal/constrained_domain.h>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Delaunay_mesh_criteria_2.h>
@@ -102,7 +102,7 @@ inline bool append_retriangulation(const Coplanar_region& region, const std::vec
     cdt.insert_constraint(a, b);
   }
   // The region is the faces an odd number of sides away from the outside.
-  welding::mark_constraint_depth(cdt);
+  mark_constraint_depth(cdt);
   for(auto f : cdt.all_face_handles())
     f->set_in_domain(f->info() % 2 == 1);
   CGAL::Delaunay_mesher_2<CDT, CGAL::Delaunay_mesh_criteria_2<CDT> > mesher(cdt, CGAL::Delaunay_mesh_criteria_2<CDT>(0.125));

@@ -14,7 +14,7 @@
 #ifndef CGAL_CONFORMAL_REMESHING_INTERNAL_WELDING_RETRIANGULATE_FLAT_REGIONS_H
 #define CGAL_CONFORMAL_REMESHING_INTERNAL_WELDING_RETRIANGULATE_FLAT_REGIONS_H
 
-#include <CGAL/Conformal_remeshing/internal/welding/constrained_domain.h>
+#include <CGAL/Conformal_remeshing/internal/constrained_domain.h>
 #include <CGAL/Conformal_remeshing/internal/welding/flat_region.h>
 #include <CGAL/Conformal_remeshing/internal/welding/weld.h>
 

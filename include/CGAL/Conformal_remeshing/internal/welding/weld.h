@@ -10,7 +10,7 @@
 
 #include <CGAL/Conformal_remeshing/Error.h>
 #include <CGAL/Conformal_remeshing/internal/welding/annulus.h>
-#include <CGAL/Conformal_remeshing/internal/welding/constrained_domain.h>
+#include <CGAL/Conformal_remeshing/internal/constrained_domain.h>
 #include <CGAL/Conformal_remeshing/internal/welding/flat_region.h>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>

@@ -2,10 +2,11 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The faces of a constrained triangulation inside the polygons its constraints bound, and
-// points of a square grid added inside them.
+// points of a square grid added inside them: shared by the welding (the annulus and hole fills)
+// and the quality measures (a well-shaped cover of flat regions).
 
-#ifndef CGAL_CONFORMAL_REMESHING_INTERNAL_WELDING_CONSTRAINED_DOMAIN_H
-#define CGAL_CONFORMAL_REMESHING_INTERNAL_WELDING_CONSTRAINED_DOMAIN_H
+#ifndef CGAL_CONFORMAL_REMESHING_INTERNAL_CONSTRAINED_DOMAIN_H
+#define CGAL_CONFORMAL_REMESHING_INTERNAL_CONSTRAINED_DOMAIN_H
 
 #include <CGAL/Bbox_2.h>
 #include <CGAL/squared_distance_2.h>
@@ -17,7 +18,6 @@
 namespace CGAL {
 namespace Conformal_remeshing {
 namespace internal {
-namespace welding {
 
 /// Sets the `info()` of every face of `cdt` (an `int`) to the number of constraints crossed on
 /// the way from the infinite face: a face is inside the domain when that number is odd (holes
@@ -116,9 +116,8 @@ std::vector<typename CDT::Vertex_handle> insert_away_from_constraints(CDT& cdt, 
   return vertex;
 }
 
-} // namespace welding
 } // namespace internal
 } // namespace Conformal_remeshing
 } // namespace CGAL
 
-#endif // CGAL_CONFORMAL_REMESHING_INTERNAL_WELDING_CONSTRAINED_DOMAIN_H
+#endif // CGAL_CONFORMAL_REMESHING_INTERNAL_CONSTRAINED_DOMAIN_H
