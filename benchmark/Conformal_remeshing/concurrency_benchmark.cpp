@@ -27,6 +27,7 @@
 #endif
 
 #include <algorithm>
+#include <functional>
 #include <cerrno>
 #include <chrono>
 #include <cstdio>
@@ -118,13 +119,15 @@ CR::Remeshing_report run_once(const Mesh& input, Timings& t)
 {
   Mesh output;
   CR::Remeshing_report report;
-  t.seconds[0].push_back(bm::wall_seconds([&] { report = CR::remesh_conformal<ConcurrencyTag>(input, output); }));
-  t.seconds[1].push_back(report.seconds_segmentation);
-  t.seconds[2].push_back(report.seconds_flattening);
-  t.seconds[3].push_back(report.seconds_meshing_stage);
-  t.seconds[4].push_back(report.seconds_gluing);
+  CR::Remeshing_statistics statistics;
+  t.seconds[0].push_back(bm::wall_seconds(
+    [&] { report = CR::remesh_conformal<ConcurrencyTag>(input, output, CR::parameters::statistics(std::ref(statistics))); }));
+  t.seconds[1].push_back(statistics.seconds_segmentation);
+  t.seconds[2].push_back(statistics.seconds_flattening);
+  t.seconds[3].push_back(statistics.seconds_meshing_stage);
+  t.seconds[4].push_back(statistics.seconds_gluing);
   double sum = 0., largest = 0.;
-  for(const CR::Flattening_report& p : report.patches)
+  for(const CR::Flattening_report& p : statistics.patches)
   {
     const double seconds = p.seconds_welding + p.seconds_flow + p.seconds_layout + p.seconds_check;
     sum += seconds;
@@ -132,7 +135,7 @@ CR::Remeshing_report run_once(const Mesh& input, Timings& t)
   }
   t.flattening_patch_seconds.push_back(sum);
   t.largest_flattening_share.push_back(sum > 0. ? largest / sum : 0.);
-  t.meshing_patch_seconds.push_back(report.seconds_planar_meshing + report.seconds_optimization + report.seconds_pull_back);
+  t.meshing_patch_seconds.push_back(statistics.seconds_planar_meshing + statistics.seconds_optimization + statistics.seconds_pull_back);
   return report;
 }
 

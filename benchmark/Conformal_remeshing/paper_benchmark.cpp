@@ -152,6 +152,7 @@ struct Record
   std::size_t output_vertices = 0, output_faces = 0;
   bool is_conformal = false;
   CR::Remeshing_report report;
+  CR::Remeshing_statistics statistics;
   // after the method
   bool measured = false;
   CR::Mesh_quality_report input_quality, output_quality;
@@ -160,11 +161,11 @@ struct Record
   double peak_mb_with_measuring = -1.;
 };
 
-void write_library_report(tools::Json_writer& json, const CR::Remeshing_report& r)
+void write_library_report(tools::Json_writer& json, const CR::Remeshing_report& r, const CR::Remeshing_statistics& s)
 {
   double welding = 0., refinement = 0., layout = 0., check = 0., flips = 0., factorization = 0., solve = 0., line_search = 0.;
   std::size_t iterations = 0, not_converged = 0, edge_splits = 0, boundary_splits = 0, welded_vertices = 0, hole_fill_flips = 0;
-  for(const CR::Flattening_report& p : r.patches)
+  for(const CR::Flattening_report& p : s.patches)
   {
     welding += p.seconds_welding;
     refinement += p.seconds_refinement;
@@ -182,28 +183,28 @@ void write_library_report(tools::Json_writer& json, const CR::Remeshing_report& 
     hole_fill_flips += p.hole_fill_flips;
   }
   json.key("library_seconds").begin_object()
-      .field("segmentation", r.seconds_segmentation).field("flattening", r.seconds_flattening)
-      .field("meshing_stage", r.seconds_meshing_stage).field("gluing", r.seconds_gluing)
+      .field("segmentation", s.seconds_segmentation).field("flattening", s.seconds_flattening)
+      .field("meshing_stage", s.seconds_meshing_stage).field("gluing", s.seconds_gluing)
       .field("welding_thread_seconds", welding).field("refinement_thread_seconds", refinement) // part of welding
-      .field("ricci_flow_thread_seconds", r.seconds_ricci_flow)
+      .field("ricci_flow_thread_seconds", s.seconds_ricci_flow)
       // parts of the flow: flips and splits to Delaunay, Hessian factorizations, solves, line search
       .field("ricci_flow_flips_thread_seconds", flips).field("ricci_flow_factorization_thread_seconds", factorization)
       .field("ricci_flow_solve_thread_seconds", solve).field("ricci_flow_line_search_thread_seconds", line_search)
       .field("layout_thread_seconds", layout).field("embedding_check_thread_seconds", check)
-      .field("planar_meshing_thread_seconds", r.seconds_planar_meshing)
-      .field("optimization_thread_seconds", r.seconds_optimization)
-      .field("pull_back_thread_seconds", r.seconds_pull_back).end_object();
+      .field("planar_meshing_thread_seconds", s.seconds_planar_meshing)
+      .field("optimization_thread_seconds", s.seconds_optimization)
+      .field("pull_back_thread_seconds", s.seconds_pull_back).end_object();
   json.key("segmentation").begin_object().field("patches", r.number_of_patches).field("plane_cuts", r.plane_cuts)
       .field("patch_bisections", r.patch_bisections).field("feature_edges", r.feature_edges)
       .field("dangling_feature_edges", r.dangling_feature_edges).end_object();
-  json.key("flattening").begin_object().field("newton_iterations_max", r.max_newton_iterations)
-      .field("newton_iterations_total", iterations).field("flips", r.flips).field("hole_fill_flips", hole_fill_flips)
-      .field("retriangulated_faces", r.retriangulated_faces).field("patches_not_converged", not_converged).field("max_curvature_error", r.max_curvature_error)
-      .field("max_scale_ratio", r.max_scale_ratio).field("edge_splits", edge_splits)
+  json.key("flattening").begin_object().field("newton_iterations_max", s.max_newton_iterations)
+      .field("newton_iterations_total", iterations).field("flips", s.flips).field("hole_fill_flips", hole_fill_flips)
+      .field("retriangulated_faces", s.retriangulated_faces).field("patches_not_converged", not_converged).field("max_curvature_error", s.max_curvature_error)
+      .field("max_scale_ratio", s.max_scale_ratio).field("edge_splits", edge_splits)
       .field("boundary_splits", boundary_splits).field("welded_vertices", welded_vertices).end_object();
-  json.key("meshing").begin_object().field("boundary_curves", r.boundary_curves).field("refined_boundary_curves", r.refined_boundary_curves)
+  json.key("meshing").begin_object().field("boundary_curves", s.boundary_curves).field("refined_boundary_curves", r.refined_boundary_curves)
       .field("split_diagonals", r.split_diagonals)
-      .field("boundary_samples", r.boundary_samples).field("clamped_vertices", r.clamped_vertices).end_object();
+      .field("boundary_samples", s.boundary_samples).field("clamped_vertices", s.clamped_vertices).end_object();
 }
 
 std::string to_json(const Record& r)
@@ -236,7 +237,7 @@ std::string to_json(const Record& r)
     json.field("method_seconds", r.method_seconds).field("peak_mb", r.peak_mb_method);
     json.key("output").begin_object().field("vertices", r.output_vertices).field("faces", r.output_faces).end_object();
     if(r.is_conformal)
-      write_library_report(json, r.report);
+      write_library_report(json, r.report, r.statistics);
   }
   if(r.measured)
   {
@@ -541,10 +542,16 @@ int run(int argc, char** argv)
         if(!stage.empty())
           recorder.start_stage(stage);
       };
+      CR::Remeshing_statistics statistics;
       const CR::Remeshing_report report = CR::remesh_conformal<CGAL::Parallel_if_available_tag>(
-        input, output, CR::parameters::target_edge_length(h, CR::parameters::cut_planes(planes, CR::parameters::progress(progress))));
+        input, output,
+        CR::parameters::target_edge_length(
+          h, CR::parameters::cut_planes(planes, CR::parameters::progress(progress, CR::parameters::statistics(std::ref(statistics))))));
       recorder.end_stage();
-      recorder.update([&](Record& r) { r.report = report; });
+      recorder.update([&](Record& r) {
+        r.report = report;
+        r.statistics = statistics;
+      });
     }
     else
     {

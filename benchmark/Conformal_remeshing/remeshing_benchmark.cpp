@@ -310,6 +310,7 @@ int main(int argc, char** argv)
       save(input, model, "_input.off");
     Mesh ours;
     CR::Remeshing_report report;
+    CR::Remeshing_statistics statistics;
     double ours_seconds = 0.;
     std::vector<double> stage_seconds, planar_seconds, optimization_seconds, pull_back_seconds; // per run
     std::vector<CR::Meshing_phase_seconds> phase_seconds;
@@ -317,12 +318,12 @@ int main(int argc, char** argv)
     {
       ours_seconds = bm::median_seconds([&] {
         report = CR::remesh_conformal(input, ours,
-                                      CR::parameters::lloyd_iterations(lloyd, CR::parameters::optimization_rounds(rounds, CR::parameters::relative_target_edge_length(relative))));
-        stage_seconds.push_back(report.seconds_meshing_stage);
-        planar_seconds.push_back(report.seconds_planar_meshing);
-        optimization_seconds.push_back(report.seconds_optimization);
-        pull_back_seconds.push_back(report.seconds_pull_back);
-        phase_seconds.push_back(report.meshing_phases);
+                                      CR::parameters::statistics(std::ref(statistics), CR::parameters::lloyd_iterations(lloyd, CR::parameters::optimization_rounds(rounds, CR::parameters::relative_target_edge_length(relative)))));
+        stage_seconds.push_back(statistics.seconds_meshing_stage);
+        planar_seconds.push_back(statistics.seconds_planar_meshing);
+        optimization_seconds.push_back(statistics.seconds_optimization);
+        pull_back_seconds.push_back(statistics.seconds_pull_back);
+        phase_seconds.push_back(statistics.meshing_phases);
       });
     }
     catch(const CR::Error& e)
@@ -362,11 +363,11 @@ int main(int argc, char** argv)
     json << (k ? ",\n" : "") << "  {\"model\": " << json_string(model.name) << ", \"target_edge_length\": " << h
          << ", \"lloyd_iterations\": " << lloyd << ", \"optimization_rounds\": " << rounds
          << ", \"patches\": " << report.number_of_patches << ", \"stage_seconds\": {\"segmentation\": "
-         << report.seconds_segmentation << ", \"flattening\": " << report.seconds_flattening
-         << ", \"meshing_and_pull_back\": " << report.seconds_meshing_stage << ", \"gluing\": " << report.seconds_gluing
-         << ", \"planar_meshing_thread_seconds\": " << report.seconds_planar_meshing
-         << ", \"optimization_thread_seconds\": " << report.seconds_optimization
-         << ", \"pull_back_thread_seconds\": " << report.seconds_pull_back << "}, \"conformal\": ";
+         << statistics.seconds_segmentation << ", \"flattening\": " << statistics.seconds_flattening
+         << ", \"meshing_and_pull_back\": " << statistics.seconds_meshing_stage << ", \"gluing\": " << statistics.seconds_gluing
+         << ", \"planar_meshing_thread_seconds\": " << statistics.seconds_planar_meshing
+         << ", \"optimization_thread_seconds\": " << statistics.seconds_optimization
+         << ", \"pull_back_thread_seconds\": " << statistics.seconds_pull_back << "}, \"conformal\": ";
     write_json(json, a);
     speeds.push_back(Speed{model.name, a.vertices, bm::median(stage_seconds), bm::median(planar_seconds),
                            bm::median(optimization_seconds), bm::median(pull_back_seconds),

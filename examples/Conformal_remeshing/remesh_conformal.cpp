@@ -29,6 +29,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
+#include <functional>
 #include <chrono>
 #include <cmath>
 #include <fstream>
@@ -331,10 +332,11 @@ int main(int argc, char** argv)
 
   Mesh output;
   CR::Remeshing_report report;
+  CR::Remeshing_statistics statistics;
   try
   {
     progress("remeshing " + std::to_string(input.number_of_faces()) + " faces");
-    const auto limited = CR::parameters::maximum_running_time(remaining_time(), np);
+    const auto limited = CR::parameters::statistics(std::ref(statistics), CR::parameters::maximum_running_time(remaining_time(), np));
     report = o.sequential ? CR::remesh_conformal<CGAL::Sequential_tag>(input, output, limited)
                           : CR::remesh_conformal<CGAL::Parallel_if_available_tag>(input, output, limited);
   }
@@ -367,32 +369,32 @@ int main(int argc, char** argv)
           .field("triangles_from_polygons", repaired.triangles_from_polygons).field("reoriented_faces", repaired.reoriented_faces)
           .field("removed_isolated_vertices", repaired.removed_isolated_vertices)
           .field("stitched_vertices", repaired.stitched_vertices).end_object();
-      json.key("seconds").begin_object().field("segmentation", report.seconds_segmentation)
-          .field("flattening", report.seconds_flattening).field("meshing_and_pull_back", report.seconds_meshing_stage)
-          .field("gluing", report.seconds_gluing).field("ricci_flow_thread_seconds", report.seconds_ricci_flow)
-          .field("planar_meshing_thread_seconds", report.seconds_planar_meshing)
-          .field("optimization_thread_seconds", report.seconds_optimization)
-          .field("pull_back_thread_seconds", report.seconds_pull_back);
+      json.key("seconds").begin_object().field("segmentation", statistics.seconds_segmentation)
+          .field("flattening", statistics.seconds_flattening).field("meshing_and_pull_back", statistics.seconds_meshing_stage)
+          .field("gluing", statistics.seconds_gluing).field("ricci_flow_thread_seconds", statistics.seconds_ricci_flow)
+          .field("planar_meshing_thread_seconds", statistics.seconds_planar_meshing)
+          .field("optimization_thread_seconds", statistics.seconds_optimization)
+          .field("pull_back_thread_seconds", statistics.seconds_pull_back);
       json.key("meshing_phase_thread_seconds").begin_object();
       CR::Meshing_phase_seconds::for_each_phase(
-        [&](const char* name, double CR::Meshing_phase_seconds::*phase) { json.field(name, report.meshing_phases.*phase); });
+        [&](const char* name, double CR::Meshing_phase_seconds::*phase) { json.field(name, statistics.meshing_phases.*phase); });
       json.end_object().end_object();
       json.key("segmentation").begin_object().field("patches", report.number_of_patches)
           .field("features_dropped", report.features_dropped).field("features_fallback_reason", report.features_fallback_reason)
           .field("plane_cuts", report.plane_cuts).field("patch_bisections", report.patch_bisections)
           .field("feature_edges", report.feature_edges).field("dangling_feature_edges", report.dangling_feature_edges)
-          .field("boundary_curves", report.boundary_curves).field("refined_boundary_curves", report.refined_boundary_curves)
+          .field("boundary_curves", statistics.boundary_curves).field("refined_boundary_curves", report.refined_boundary_curves)
           .field("split_diagonals", report.split_diagonals).end_object();
       json.key("frontal_insertion").begin_object().field("dropped", report.frontal_dropped)
           .field("fallback_reason", report.frontal_fallback_reason).end_object();
-      json.key("flattening").begin_object().field("max_iterations", report.max_newton_iterations)
-          .field("max_curvature_error", report.max_curvature_error).field("flips", report.flips)
-          .field("retriangulated_faces", report.retriangulated_faces).field("max_scale_ratio", report.max_scale_ratio).end_object();
-      json.field("boundary_samples", report.boundary_samples).field("clamped_vertices", report.clamped_vertices)
-          .field("optimization_flips", report.optimization_flips).field("optimization_splits", report.optimization_splits)
-          .field("optimization_chord_splits", report.optimization_chord_splits)
-          .field("optimization_collapses", report.optimization_collapses).field("flips_after_gluing", report.flips_after_gluing)
-          .field("moves_after_gluing", report.moves_after_gluing)
+      json.key("flattening").begin_object().field("max_iterations", statistics.max_newton_iterations)
+          .field("max_curvature_error", statistics.max_curvature_error).field("flips", statistics.flips)
+          .field("retriangulated_faces", statistics.retriangulated_faces).field("max_scale_ratio", statistics.max_scale_ratio).end_object();
+      json.field("boundary_samples", statistics.boundary_samples).field("clamped_vertices", statistics.clamped_vertices)
+          .field("optimization_flips", statistics.optimization_flips).field("optimization_splits", statistics.optimization_splits)
+          .field("optimization_chord_splits", statistics.optimization_chord_splits)
+          .field("optimization_collapses", statistics.optimization_collapses).field("flips_after_gluing", statistics.flips_after_gluing)
+          .field("moves_after_gluing", statistics.moves_after_gluing)
           .field("self_intersection_refinements", report.self_intersection_refinements);
       json.key("input_quality");
       tools::write_json(json, before);
@@ -424,8 +426,8 @@ int main(int argc, char** argv)
             << (fidelity.self_intersects ? "YES" : "none") << "\n"
             << "  " << report.number_of_patches << " patches (" << report.plane_cuts << " plane cuts, "
             << report.feature_edges << " feature edges" << (report.features_dropped ? ", dropped: no flattening with them" : "")
-            << "); seconds: segmentation " << report.seconds_segmentation
-            << ", flattening " << report.seconds_flattening << ", meshing and pull-back " << report.seconds_meshing_stage
-            << ", gluing " << report.seconds_gluing << "\n";
+            << "); seconds: segmentation " << statistics.seconds_segmentation
+            << ", flattening " << statistics.seconds_flattening << ", meshing and pull-back " << statistics.seconds_meshing_stage
+            << ", gluing " << statistics.seconds_gluing << "\n";
   return 0;
 }

@@ -144,6 +144,11 @@ namespace Conformal_remeshing {
 ///     \cgalParamType{`std::reference_wrapper<std::vector<Surface_location> >`}
 ///     \cgalParamDefault{not written}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{statistics}
+///     \cgalParamDescription{an output: receives the timings and counters of the stages (see `Remeshing_statistics`); pass it as `std::ref(statistics)`}
+///     \cgalParamType{`std::reference_wrapper<Remeshing_statistics>`}
+///     \cgalParamDefault{not written}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_point_map}
 ///     \cgalParamDescription{the points of the vertices of `input`}
 ///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%vertex_descriptor` as key type}
@@ -162,7 +167,7 @@ namespace Conformal_remeshing {
 /// \param input the mesh to remesh
 /// \param output receives the new mesh (cleared first)
 /// \param np the named parameters above
-/// \returns what happened, with times per stage
+/// \returns what happened (the timings and counters go to the `statistics` output)
 /// \throws Error with `Error_code::INVALID_INPUT` when the input is not a valid, manifold,
 ///         orientable triangle mesh or a parameter is out of range, and with the flattening's
 ///         code when a patch cannot be flattened even after bisection, and without sharp
@@ -181,6 +186,7 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
   using CGAL::parameters::get_parameter;
   namespace stages = internal::remeshing;
   Remeshing_report report;
+  Remeshing_statistics statistics;
   const internal::Time_limit time_limit = internal::Time_limit::from(np, "remesh_conformal");
   const std::function<void(const std::string&)> progress =
     choose_parameter(get_parameter(np, internal_np::progress), [](const std::string&) {});
@@ -190,7 +196,7 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
   report.target_edge_length = options.target_edge_length;
 
   stages::Flattened_surface flattened;
-  stages::segment_and_flatten<ConcurrencyTag>(input, options, np, time_limit, progress, report, flattened);
+  stages::segment_and_flatten<ConcurrencyTag>(input, options, np, time_limit, progress, report, statistics, flattened);
   const stages::Flattened_surface& surface = flattened; // read, never changed, from here on
 
   // Asked only when the output intersects itself, once.
@@ -202,12 +208,14 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
     return input_intersects == 1;
   };
   stages::Glued_output<TriangleMesh> glued = stages::mesh_and_glue_with_fallback<ConcurrencyTag, TriangleMesh>(
-    surface, options, input_self_intersects, time_limit, progress, report);
+    surface, options, input_self_intersects, time_limit, progress, report, statistics);
 
   output = std::move(glued.mesh);
   if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::vertex_locations_t>::value)
     CGAL::parameters::get_parameter_reference(np, internal_np::vertex_locations) =
       stages::surface_locations(input, np, surface.segmentation, glued.vertex_points, glued.vertex_faces);
+  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::statistics_t>::value)
+    CGAL::parameters::get_parameter_reference(np, internal_np::statistics) = std::move(statistics);
   report.output_vertices = num_vertices(output);
   report.output_faces = num_faces(output);
   return report;

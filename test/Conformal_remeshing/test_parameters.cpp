@@ -120,12 +120,12 @@ TEST(Parameters, AnglesAndPlanarMeshing)
   EXPECT_FALSE(same_mesh(reference, remeshed(input, CR::parameters::frontal_insertion(false, CR::parameters::target_edge_length(h)))));
   EXPECT_FALSE(same_mesh(reference, remeshed(input, CR::parameters::smoothing_iterations(2, CR::parameters::target_edge_length(h)))));
   EXPECT_FALSE(same_mesh(reference, remeshed(input, CR::parameters::lloyd_iterations(5, CR::parameters::target_edge_length(h)))));
-  CR::Remeshing_report report;
-  remeshed(input, CR::parameters::optimization_rounds(0, CR::parameters::target_edge_length(h)), &report);
-  EXPECT_EQ(report.optimization_flips, 0u);
-  EXPECT_EQ(report.optimization_splits, 0u);
-  remeshed(input, CR::parameters::target_edge_length(h), &report);
-  EXPECT_GT(report.optimization_flips, 0u);
+  CR::Remeshing_statistics statistics;
+  remeshed(input, CR::parameters::optimization_rounds(0, CR::parameters::target_edge_length(h, CR::parameters::statistics(std::ref(statistics)))));
+  EXPECT_EQ(statistics.optimization_flips, 0u);
+  EXPECT_EQ(statistics.optimization_splits, 0u);
+  remeshed(input, CR::parameters::target_edge_length(h, CR::parameters::statistics(std::ref(statistics))));
+  EXPECT_GT(statistics.optimization_flips, 0u);
   test_support::expect_error([&] { remeshed(input, CR::parameters::minimum_angle(40.)); }, CR::Error_code::INVALID_INPUT,
                              {"minimum angle"});
 }
@@ -152,13 +152,16 @@ TEST(Parameters, SegmentationAndFlatteningParameters)
 {
   const Mesh input = cap();
   CR::Remeshing_report reference, report;
-  const Mesh reference_output = remeshed(input, CR::parameters::target_edge_length(h), &reference);
+  CR::Remeshing_statistics reference_statistics, statistics;
+  const Mesh reference_output =
+    remeshed(input, CR::parameters::target_edge_length(h, CR::parameters::statistics(std::ref(reference_statistics))), &reference);
   // The flow's resolution: the default is twice the target; shorter edges split more in the flow.
-  remeshed(input, CR::parameters::maximum_edge_length(0.5 * h, CR::parameters::target_edge_length(h)), &report);
-  ASSERT_EQ(report.patches.size(), reference.patches.size());
-  EXPECT_GT(report.patches[0].edge_splits, reference.patches[0].edge_splits);
+  remeshed(input,
+           CR::parameters::maximum_edge_length(0.5 * h, CR::parameters::target_edge_length(h, CR::parameters::statistics(std::ref(statistics)))));
+  ASSERT_EQ(statistics.patches.size(), reference_statistics.patches.size());
+  EXPECT_GT(statistics.patches[0].edge_splits, reference_statistics.patches[0].edge_splits);
   // A scale ratio the cap's flattening exceeds bisects it.
-  const double ratio = 0.8 * reference.max_scale_ratio;
+  const double ratio = 0.8 * reference_statistics.max_scale_ratio;
   ASSERT_GT(ratio, 1.);
   remeshed(input, CR::parameters::maximum_scale_ratio(ratio, CR::parameters::target_edge_length(h)), &report);
   EXPECT_GT(report.patch_bisections, reference.patch_bisections);

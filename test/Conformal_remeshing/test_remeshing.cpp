@@ -86,8 +86,9 @@ TEST(RemeshConformal, FineSphericalCapHasItsEdgesWithinTheRange)
   // the collapses (2026-11-27).
   Mesh mesh;
   bm::make_spherical_cap(mesh, 120., 160, 480);
-  const CR::Remeshing_report report = check_remeshing(mesh, remeshing_checks::Quality_bars(30.).edge_share_above(0.98));
-  EXPECT_GT(report.optimization_collapses, 100u);
+  CR::Remeshing_statistics statistics;
+  check_remeshing(mesh, remeshing_checks::Quality_bars(30.).edge_share_above(0.98), CR::parameters::statistics(std::ref(statistics)));
+  EXPECT_GT(statistics.optimization_collapses, 100u);
 }
 
 TEST(RemeshConformal, CgalNefertiti)
@@ -230,8 +231,10 @@ TEST(RemeshConformal, ReportsWhereTheMeshingStageTimeGoes)
   };
   Mesh output;
   // One Laplacian pass in the plane, which frontal insertion (the default) does without.
-  const CR::Remeshing_report report = CR::remesh_conformal(
-    mesh, output, CR::parameters::smoothing_iterations(1, CR::parameters::relative_target_edge_length(0.02)));
+  CR::Remeshing_statistics report;
+  CR::remesh_conformal(mesh, output,
+                       CR::parameters::statistics(std::ref(report),
+                                                  CR::parameters::smoothing_iterations(1, CR::parameters::relative_target_edge_length(0.02))));
   const CR::Meshing_phase_seconds& phases = report.meshing_phases;
   for(double seconds : {phases.planar_setup, phases.optimization_setup, phases.collapses, phases.angle_passes})
     EXPECT_GE(seconds, 0.);
@@ -244,9 +247,11 @@ TEST(RemeshConformal, ReportsWhereTheMeshingStageTimeGoes)
 
   // Without the smoothing and the optimization, their phases take no time (the smoothing's, two
   // clock readings apart; a preemption there could add a little).
-  const CR::Remeshing_report refinement_only = CR::remesh_conformal(
-    mesh, output,
-    CR::parameters::smoothing_iterations(0, CR::parameters::optimization_rounds(0, CR::parameters::relative_target_edge_length(0.02))));
+  CR::Remeshing_statistics refinement_only;
+  CR::remesh_conformal(mesh, output,
+                       CR::parameters::statistics(std::ref(refinement_only),
+                                                  CR::parameters::smoothing_iterations(
+                                                    0, CR::parameters::optimization_rounds(0, CR::parameters::relative_target_edge_length(0.02)))));
   const CR::Meshing_phase_seconds& refined = refinement_only.meshing_phases;
   EXPECT_GT(refined.planar_refinement, 0.);
   EXPECT_LT(refined.planar_smoothing, 0.5 * refined.planar_refinement);

@@ -407,12 +407,13 @@ TEST(RemeshAnyTopology, CgalElephantGenusThree)
   // 94.8% since the short edges are collapsed after the splits (mean skewness 0.1116).
   // With frontal insertion (2026-12-01): mean skewness 0.099, smallest angle 24.6 degrees (one
   // triangle below 25, 0.005%), so the angle is held at 24.
-  const CR::Remeshing_report report = check_remeshing(elephant, remeshing_checks::Quality_bars(24.).edge_share_above(0.94));
-  EXPECT_GT(report.flips_after_gluing, 0u);
-  EXPECT_GT(report.moves_after_gluing, 1000u);
+  CR::Remeshing_statistics statistics;
+  check_remeshing(elephant, remeshing_checks::Quality_bars(24.).edge_share_above(0.94), CR::parameters::statistics(std::ref(statistics)));
+  EXPECT_GT(statistics.flips_after_gluing, 0u);
+  EXPECT_GT(statistics.moves_after_gluing, 1000u);
   // The edges that cut under the bends of its scanned skin are split (200 at 1% of the diagonal).
-  EXPECT_GT(report.optimization_chord_splits, 0u);
-  EXPECT_LT(report.optimization_chord_splits, report.optimization_splits);
+  EXPECT_GT(statistics.optimization_chord_splits, 0u);
+  EXPECT_LT(statistics.optimization_chord_splits, statistics.optimization_splits);
 }
 
 // The elephant at a target of 0.012 (0.87% of its diagonal). Its cuts between patches follow input
@@ -510,10 +511,12 @@ TEST(RemeshAnyTopology, PlaneCutThroughThePlate)
   bm::Perforated_plate_parameters p = plate_with_holes(3);
   bm::make_perforated_plate(plate, p);
   const std::vector<K::Plane_3> planes{K::Plane_3(0, 0, 1, -0.5 * p.thickness)};
+  CR::Remeshing_statistics statistics;
   const CR::Remeshing_report report =
     check_remeshing(plate,
                     20.,
-                    CR::parameters::cut_planes(planes, CR::parameters::features_angle(0.)), &output);
+                    CR::parameters::statistics(std::ref(statistics), CR::parameters::cut_planes(planes, CR::parameters::features_angle(0.))),
+                    &output);
   EXPECT_EQ(report.plane_cuts, 1u);
   EXPECT_EQ(report.number_of_patches, 2u);
   // The cut is sampled on the plane, but it is a cut, not a feature: after gluing its samples
@@ -522,7 +525,7 @@ TEST(RemeshAnyTopology, PlaneCutThroughThePlate)
   std::size_t on_plane = 0;
   for(auto v : output.vertices())
     on_plane += std::abs(output.point(v).z() - 0.5 * p.thickness) < 1e-9 * diagonal(plate);
-  EXPECT_GT(report.moves_after_gluing, 100u);
+  EXPECT_GT(statistics.moves_after_gluing, 100u);
   EXPECT_GT(on_plane, 0u);
   EXPECT_LT(on_plane, 100u);
 }

@@ -19,9 +19,9 @@ namespace Conformal_remeshing {
 
 /// \ingroup PkgConformalRemeshingRef
 /// Where the meshing stage's time goes, in seconds summed over the patches (see
-/// `Remeshing_report::meshing_phases`). The first three add up to
-/// `Remeshing_report::seconds_planar_meshing`, the other six to
-/// `Remeshing_report::seconds_optimization` (wall seconds of each patch's optimization, whose
+/// `Remeshing_statistics::meshing_phases`). The first three add up to
+/// `Remeshing_statistics::seconds_planar_meshing`, the other six to
+/// `Remeshing_statistics::seconds_optimization` (wall seconds of each patch's optimization, whose
 /// vertex moves may run in parallel).
 struct Meshing_phase_seconds
 {
@@ -67,10 +67,12 @@ struct Meshing_phase_seconds
 };
 
 /// \ingroup PkgConformalRemeshingRef
-/// What `remesh_conformal()` did.
+/// What `remesh_conformal()` did, for its user: the sizes, what was repaired, refined or fell
+/// back, and why. The timings and counters of its stages are in `Remeshing_statistics`, an
+/// optional output (named parameter `statistics`).
 struct Remeshing_report
 {
-  double target_edge_length = 0.;
+  double target_edge_length = 0.; ///< the target edge length used, in input units
   std::size_t number_of_patches = 0;
   std::size_t plane_cuts = 0;       ///< cuts by planes: given, and bisections of the segmentation
   std::size_t patch_bisections = 0; ///< patches bisected because their flattening failed or stretched
@@ -86,20 +88,32 @@ struct Remeshing_report
   /// `frontal_fallback_reason` says why
   bool frontal_dropped = false;
   std::string frontal_fallback_reason;
+  /// rounds of meshing again with shorter edges where the output intersected itself (0 to 3)
+  std::size_t self_intersection_refinements = 0;
+  std::size_t refined_boundary_curves = 0; ///< times a boundary curve of a thin patch was sampled twice as densely
+  std::size_t split_diagonals = 0; ///< times a patch split an edge between two samples that another patch also has
+  std::size_t output_vertices = 0;
+  std::size_t output_faces = 0;
+};
+
+/// \ingroup PkgConformalRemeshingRef
+/// The timings and counters of a run of `remesh_conformal()`, written to the named parameter
+/// `statistics` when it is given: for benchmarks, profiling and the tools' detailed reports.
+/// The counts of the patches' meshing and the seconds add up over every round of meshing again
+/// (`Remeshing_report::self_intersection_refinements`, and a fallback to refinement alone);
+/// `flips_after_gluing` and `moves_after_gluing` are those of the output.
+struct Remeshing_statistics
+{
   std::vector<Flattening_report> patches; ///< the flattening of each patch
   int max_newton_iterations = 0;
   double max_curvature_error = 0.;
-  std::size_t flips = 0;
+  std::size_t flips = 0; ///< edge flips of the flows, summed over the patches
   /// faces of flat regions (developable or exactly coplanar) replaced by their constrained
   /// Delaunay triangulation before the flips (`Flattening_report::retriangulated_faces`, summed)
   std::size_t retriangulated_faces = 0;
   double max_scale_ratio = 0.; ///< the largest ratio of the local scales in a patch
   std::size_t boundary_curves = 0;
   std::size_t boundary_samples = 0;
-  std::size_t refined_boundary_curves = 0; ///< times a boundary curve of a thin patch was sampled twice as densely
-  std::size_t split_diagonals = 0; ///< times a patch split an edge between two samples that another patch also has
-  std::size_t output_vertices = 0;
-  std::size_t output_faces = 0;
   /// output vertices whose planar position fell outside the flat patch (between a boundary
   /// chord and the boundary polyline) and were clamped onto the nearest patch triangle
   std::size_t clamped_vertices = 0;
@@ -114,19 +128,11 @@ struct Remeshing_report
   /// splits (one vertex fewer each; uniform sizing only)
   std::size_t optimization_collapses = 0;
   /// edge flips on the glued mesh: between boundary samples and at moved points for shape, then
-  /// of triangles below 30 degrees; mostly across the cuts between patches (if the output
-  /// intersects itself with them and the moves, they are made again without the moves, then
-  /// none are)
+  /// of triangles below 30 degrees; mostly across the cuts between patches
   std::size_t flips_after_gluing = 0;
   /// vertex moves on the glued mesh: samples of the cuts between patches and their neighbours,
-  /// moved on the input surface for shape (none if the output intersects itself with them)
+  /// moved on the input surface for shape
   std::size_t moves_after_gluing = 0;
-  /// rounds of meshing again with shorter edges where the output intersected itself (0 to 3).
-  /// The counts of the patches' meshing (`refined_boundary_curves`, `split_diagonals`,
-  /// `clamped_vertices`, `optimization_flips`, `optimization_splits`,
-  /// `optimization_chord_splits`, `optimization_collapses`) and the seconds add up over
-  /// all rounds; `flips_after_gluing` and `moves_after_gluing` are those of the output.
-  std::size_t self_intersection_refinements = 0;
   /// wall-clock seconds of the stages (the flattening and meshing stages run patches in parallel)
   double seconds_segmentation = 0., seconds_flattening = 0., seconds_meshing_stage = 0., seconds_gluing = 0.;
   /// seconds summed over the patches (thread time; the optimization's vertex moves within a

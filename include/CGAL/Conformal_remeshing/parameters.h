@@ -78,6 +78,9 @@ CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(progress)                    // void(co
 // the place on the input surface of every output vertex (an output parameter takes
 // `std::ref(vector)`).
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(vertex_locations)
+// Output of `remesh_conformal()`: `Remeshing_statistics`, the timings and counters of its stages
+// (`std::ref(statistics)`).
+CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(statistics)
 
 // --- `segment_into_poly_annuli()` ---------------------------------------------------------------
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(features_angle) // double, degrees

@@ -137,7 +137,7 @@ public:
       unmoved_faces_(soup.point_face), longest_edge_(longest_edge), angle_((std::max)(30., minimum_angle))
   {}
 
-  void apply(bool with_moves, Remeshing_report& report)
+  void apply(bool with_moves, Remeshing_statistics& statistics)
   {
     flips_.undo(soup_.triangles);
     soup_.points = unmoved_points_;
@@ -147,24 +147,24 @@ public:
       soup_.points, soup_.triangles,
       [&](std::size_t a, std::size_t b) { return is_sample(a) && is_sample(b) && samples_.is_kept_chord(a, b); }, angle_);
     flipper.shape_passes([&](std::size_t a, std::size_t b) { return is_sample(a) && is_sample(b); }, 3);
-    report.moves_after_gluing = 0;
+    statistics.moves_after_gluing = 0;
     if(with_moves)
     {
       const std::vector<char> movable = points_around_cuts(samples_, soup_.triangles, soup_.points.size());
-      report.moves_after_gluing = move_points_after_gluing(segmentation_, soup_.points, soup_.point_face, soup_.triangles,
+      statistics.moves_after_gluing = move_points_after_gluing(segmentation_, soup_.points, soup_.point_face, soup_.triangles,
                                                            movable, angle_, longest_edge_, 5);
-      if(report.moves_after_gluing > 0)
+      if(statistics.moves_after_gluing > 0)
         flipper.shape_passes([&](std::size_t a, std::size_t b) { return movable[a] || movable[b]; }, 3);
     }
     flipper.angle_passes();
     flips_ = flipper.result();
-    report.flips_after_gluing = flips_.flips;
+    statistics.flips_after_gluing = flips_.flips;
   }
 
-  void undo(Remeshing_report& report)
+  void undo(Remeshing_statistics& statistics)
   {
     flips_.undo(soup_.triangles);
-    report.flips_after_gluing = 0;
+    statistics.flips_after_gluing = 0;
   }
 
 private:
@@ -258,24 +258,24 @@ std::vector<Epick::Point_3> centroids_of_intersecting_faces(const TriangleMesh& 
 template <typename ConcurrencyTag, typename TriangleMesh>
 Glued_output<TriangleMesh> glue_patches(const Meshed_patches& meshed, const Poly_annulus_segmentation& segmentation,
                                         const Sizing& sizing, double minimum_angle,
-                                        const std::function<bool()>& input_self_intersects, Remeshing_report& report)
+                                        const std::function<bool()>& input_self_intersects, Remeshing_statistics& statistics)
 {
   Glued_soup soup = glued_soup(meshed);
   Improvement_after_gluing improvement(soup, meshed.samples, segmentation, longest_edge_factor * sizing.target(), minimum_angle);
-  improvement.apply(true, report);
+  improvement.apply(true, statistics);
   Glued_output<TriangleMesh> output;
   soup_to_mesh(soup, output);
   // Each glued mesh is checked once.
   output.intersects = Polygon_mesh_processing::does_self_intersect<ConcurrencyTag>(output.mesh) && !input_self_intersects();
-  if(output.intersects && report.moves_after_gluing > 0)
+  if(output.intersects && statistics.moves_after_gluing > 0)
   {
-    improvement.apply(false, report);
+    improvement.apply(false, statistics);
     soup_to_mesh(soup, output);
     output.intersects = Polygon_mesh_processing::does_self_intersect<ConcurrencyTag>(output.mesh);
   }
-  if(output.intersects && report.flips_after_gluing > 0)
+  if(output.intersects && statistics.flips_after_gluing > 0)
   {
-    improvement.undo(report);
+    improvement.undo(statistics);
     soup_to_mesh(soup, output);
     output.intersects = Polygon_mesh_processing::does_self_intersect<ConcurrencyTag>(output.mesh);
   }

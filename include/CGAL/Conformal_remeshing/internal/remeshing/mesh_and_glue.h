@@ -38,21 +38,21 @@ namespace Conformal_remeshing {
 namespace internal {
 namespace remeshing {
 
-inline void add_meshing_statistics(const Meshed_patches& meshed, Remeshing_report& report)
+inline void add_meshing_statistics(const Meshed_patches& meshed, Remeshing_statistics& statistics)
 {
-  report.boundary_samples = meshed.samples.points.size();
-  report.boundary_curves = meshed.samples.number_of_curves;
+  statistics.boundary_samples = meshed.samples.points.size();
+  statistics.boundary_curves = meshed.samples.number_of_curves;
   for(const Remeshed_patch& r : meshed.remeshed)
   {
-    report.seconds_planar_meshing += r.seconds_planar_meshing;
-    report.seconds_optimization += r.seconds_optimization;
-    report.seconds_pull_back += r.seconds_pull_back;
-    report.meshing_phases += r.phases;
-    report.optimization_flips += r.optimization.flips;
-    report.optimization_splits += r.optimization.splits;
-    report.optimization_chord_splits += r.optimization.chord_splits;
-    report.optimization_collapses += r.optimization.collapses;
-    report.clamped_vertices += r.clamped_vertices;
+    statistics.seconds_planar_meshing += r.seconds_planar_meshing;
+    statistics.seconds_optimization += r.seconds_optimization;
+    statistics.seconds_pull_back += r.seconds_pull_back;
+    statistics.meshing_phases += r.phases;
+    statistics.optimization_flips += r.optimization.flips;
+    statistics.optimization_splits += r.optimization.splits;
+    statistics.optimization_chord_splits += r.optimization.chord_splits;
+    statistics.optimization_collapses += r.optimization.collapses;
+    statistics.clamped_vertices += r.clamped_vertices;
   }
 }
 
@@ -76,7 +76,8 @@ inline Error self_intersection_error(const std::vector<Epick::Point_3>& crossing
 template <typename ConcurrencyTag, typename TriangleMesh, typename Progress>
 Glued_output<TriangleMesh> mesh_and_glue(const Flattened_surface& surface, const Remeshing_options& options,
                                          const Patch_meshing& meshing, const std::function<bool()>& input_self_intersects,
-                                         const Time_limit& time_limit, const Progress& progress, Remeshing_report& report)
+                                         const Time_limit& time_limit, const Progress& progress, Remeshing_report& report,
+                                         Remeshing_statistics& statistics)
 {
   typedef std::chrono::steady_clock Clock;
   const auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
@@ -91,14 +92,14 @@ Glued_output<TriangleMesh> mesh_and_glue(const Flattened_surface& surface, const
                         options.maximum_chord_error);
     const Meshed_patches meshed =
       mesh_patches_on_shared_samples<ConcurrencyTag>(surface, sizing, options.corner_angle, meshing, time_limit, progress, report);
-    report.seconds_meshing_stage += seconds_since(start);
-    add_meshing_statistics(meshed, report);
+    statistics.seconds_meshing_stage += seconds_since(start);
+    add_meshing_statistics(meshed, statistics);
 
     start = Clock::now();
     progress("gluing");
     Glued_output<TriangleMesh> glued = glue_patches<ConcurrencyTag, TriangleMesh>(
-      meshed, surface.segmentation, sizing, options.minimum_angle, input_self_intersects, report);
-    report.seconds_gluing += seconds_since(start);
+      meshed, surface.segmentation, sizing, options.minimum_angle, input_self_intersects, statistics);
+    statistics.seconds_gluing += seconds_since(start);
     if(!glued.intersects)
       return glued;
     if(refinement == max_self_intersection_refinements || glued.crossings.empty())
@@ -119,7 +120,7 @@ template <typename ConcurrencyTag, typename TriangleMesh, typename Progress>
 Glued_output<TriangleMesh> mesh_and_glue_with_fallback(const Flattened_surface& surface, const Remeshing_options& options,
                                                        const std::function<bool()>& input_self_intersects,
                                                        const Time_limit& time_limit, const Progress& progress,
-                                                       Remeshing_report& report)
+                                                       Remeshing_report& report, Remeshing_statistics& statistics)
 {
   Patch_meshing meshing;
   meshing.minimum_angle = options.minimum_angle;
@@ -129,7 +130,7 @@ Glued_output<TriangleMesh> mesh_and_glue_with_fallback(const Flattened_surface& 
   meshing.moves_in_parallel = std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value;
   try
   {
-    return mesh_and_glue<ConcurrencyTag, TriangleMesh>(surface, options, meshing, input_self_intersects, time_limit, progress, report);
+    return mesh_and_glue<ConcurrencyTag, TriangleMesh>(surface, options, meshing, input_self_intersects, time_limit, progress, report, statistics);
   }
   catch(const Error& e)
   {
@@ -141,7 +142,7 @@ Glued_output<TriangleMesh> mesh_and_glue_with_fallback(const Flattened_surface& 
              + "): meshing again with Delaunay refinement alone");
     meshing.frontal = Frontal_insertion();
     meshing.smoothing = options.refinement_smoothing;
-    return mesh_and_glue<ConcurrencyTag, TriangleMesh>(surface, options, meshing, input_self_intersects, time_limit, progress, report);
+    return mesh_and_glue<ConcurrencyTag, TriangleMesh>(surface, options, meshing, input_self_intersects, time_limit, progress, report, statistics);
   }
 }
 

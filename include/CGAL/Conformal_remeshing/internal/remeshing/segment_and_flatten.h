@@ -42,7 +42,7 @@ inline std::string without_caller(const std::string& message)
   return message.compare(0, caller.size(), caller) == 0 ? message.substr(caller.size()) : message;
 }
 
-inline void add_flattening_statistics(const Flattened_surface& surface, Remeshing_report& report)
+inline void add_flattening_statistics(const Flattened_surface& surface, Remeshing_report& report, Remeshing_statistics& statistics)
 {
   report.patch_bisections = surface.flattened.bisections;
   report.number_of_patches = surface.flattened.patches.size();
@@ -52,13 +52,13 @@ inline void add_flattening_statistics(const Flattened_surface& surface, Remeshin
   for(const Conformal_flattening& flat : surface.flattened.flattenings)
   {
     const Flattening_report& r = flat.report;
-    report.max_newton_iterations = (std::max)(report.max_newton_iterations, r.iterations);
-    report.max_curvature_error = (std::max)(report.max_curvature_error, r.curvature_error);
-    report.flips += r.flips;
-    report.retriangulated_faces += r.retriangulated_faces;
-    report.max_scale_ratio = (std::max)(report.max_scale_ratio, r.max_scale / r.min_scale);
-    report.seconds_ricci_flow += r.seconds_flow;
-    report.patches.push_back(r);
+    statistics.max_newton_iterations = (std::max)(statistics.max_newton_iterations, r.iterations);
+    statistics.max_curvature_error = (std::max)(statistics.max_curvature_error, r.curvature_error);
+    statistics.flips += r.flips;
+    statistics.retriangulated_faces += r.retriangulated_faces;
+    statistics.max_scale_ratio = (std::max)(statistics.max_scale_ratio, r.max_scale / r.min_scale);
+    statistics.seconds_ricci_flow += r.seconds_flow;
+    statistics.patches.push_back(r);
   }
 }
 
@@ -73,7 +73,8 @@ inline void add_flattening_statistics(const Flattened_surface& surface, Remeshin
 /// without them the patches are the surface's own. The report says so.
 template <typename ConcurrencyTag, typename TriangleMesh, typename NamedParameters, typename Progress>
 void segment_and_flatten(const TriangleMesh& input, const Remeshing_options& options, const NamedParameters& np,
-                         const Time_limit& time_limit, const Progress& progress, Remeshing_report& report, Flattened_surface& result)
+                         const Time_limit& time_limit, const Progress& progress, Remeshing_report& report,
+                         Remeshing_statistics& statistics, Flattened_surface& result)
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
@@ -86,13 +87,13 @@ void segment_and_flatten(const TriangleMesh& input, const Remeshing_options& opt
     start = Clock::now();
     progress("segmenting into poly-annuli");
     segment_into_poly_annuli(input, result.segmentation, segmentation_parameters);
-    report.seconds_segmentation += std::chrono::duration<double>(Clock::now() - start).count();
+    statistics.seconds_segmentation += std::chrono::duration<double>(Clock::now() - start).count();
     time_limit.check("after the segmentation");
     start = Clock::now();
     flatten_poly_annuli<ConcurrencyTag>(result.segmentation, result.flattened,
                                         parameters::maximum_edge_length(flow_length, parameters::snap_distance(snap, np)),
                                         time_limit, "remesh_conformal");
-    report.seconds_flattening += std::chrono::duration<double>(Clock::now() - start).count();
+    statistics.seconds_flattening += std::chrono::duration<double>(Clock::now() - start).count();
   };
   try
   {
@@ -102,14 +103,14 @@ void segment_and_flatten(const TriangleMesh& input, const Remeshing_options& opt
   {
     if(e.code() == Error_code::TIME_LIMIT_EXCEEDED || result.segmentation.feature_edges == 0 || !options.features_fallback)
       throw;
-    report.seconds_flattening += std::chrono::duration<double>(Clock::now() - start).count();
+    statistics.seconds_flattening += std::chrono::duration<double>(Clock::now() - start).count();
     report.features_dropped = true;
     report.features_fallback_reason = without_caller(e.what());
     progress("no flattening with the " + std::to_string(result.segmentation.feature_edges) + " sharp feature edges ("
              + report.features_fallback_reason + "): segmenting again without them");
     run(parameters::features_angle(0., parameters::snap_distance(snap, np)));
   }
-  add_flattening_statistics(result, report);
+  add_flattening_statistics(result, report, statistics);
 
   const std::vector<Conformal_flattening>& flattenings = result.flattened.flattenings;
   result.scales.resize(flattenings.size());
