@@ -408,40 +408,45 @@ bool read_OFF(const std::string& text, std::vector<Point>& points, std::vector<s
   return true;
 }
 
-// PLY: one "ply" line, a "format" line (ascii, binary_little_endian or binary_big_endian),
-// then elements with their scalar or list properties, up to "end_header". The points are the
-// x, y, z properties of the "vertex" element and the faces the "vertex_indices" (or
-// "vertex_index") list of the "face" element; other elements and properties are skipped.
-template <typename Point>
-bool read_PLY(const std::string& text, std::vector<Point>& points, std::vector<std::vector<std::size_t> >& polygons)
+// The steps of read_PLY(), whose comment below describes the format.
+
+enum Ply_format { PLY_ASCII, PLY_LITTLE_ENDIAN, PLY_BIG_ENDIAN };
+
+// A scalar type of PLY: its size in bytes, and whether it is signed and a floating-point type.
+struct Ply_type { std::size_t size; bool is_signed, is_float; };
+
+// A property of an element: a scalar of `value_type`, or a list of `value_type` values after a
+// length of `count_type`.
+struct Ply_property { std::string name; bool is_list; Ply_type count_type, value_type; };
+
+struct Ply_element { std::string name; std::size_t count; std::vector<Ply_property> properties; };
+
+// The type called `name` in a PLY header (both the old and the sized names); false for any
+// other name.
+inline bool ply_type_of(std::string_view name, Ply_type& type)
 {
-  enum Format { PLY_ASCII, PLY_LITTLE_ENDIAN, PLY_BIG_ENDIAN };
-  struct Type { std::size_t size; bool is_signed, is_float; };
-  struct Property { std::string name; bool is_list; Type count_type, value_type; };
-  struct Element { std::string name; std::size_t count; std::vector<Property> properties; };
+  static const std::pair<const char*, Ply_type> types[] = {
+    {"char", {1, true, false}},   {"int8", {1, true, false}},     {"uchar", {1, false, false}}, {"uint8", {1, false, false}},
+    {"short", {2, true, false}},  {"int16", {2, true, false}},    {"ushort", {2, false, false}}, {"uint16", {2, false, false}},
+    {"int", {4, true, false}},    {"int32", {4, true, false}},    {"uint", {4, false, false}},  {"uint32", {4, false, false}},
+    {"float", {4, true, true}},   {"float32", {4, true, true}},   {"double", {8, true, true}},  {"float64", {8, true, true}}};
+  for(const auto& t : types)
+    if(name == t.first)
+    {
+      type = t.second;
+      return true;
+    }
+  return false;
+}
 
-  auto type_of = [](std::string_view name, Type& type) {
-    static const std::pair<const char*, Type> types[] = {
-      {"char", {1, true, false}},   {"int8", {1, true, false}},     {"uchar", {1, false, false}}, {"uint8", {1, false, false}},
-      {"short", {2, true, false}},  {"int16", {2, true, false}},    {"ushort", {2, false, false}}, {"uint16", {2, false, false}},
-      {"int", {4, true, false}},    {"int32", {4, true, false}},    {"uint", {4, false, false}},  {"uint32", {4, false, false}},
-      {"float", {4, true, true}},   {"float32", {4, true, true}},   {"double", {8, true, true}},  {"float64", {8, true, true}}};
-    for(const auto& t : types)
-      if(name == t.first)
-      {
-        type = t.second;
-        return true;
-      }
-    return false;
-  };
-
-  // The header, line by line.
-  Token_lines lines(text, 0, '\0');
+// The header, line by line, up to "end_header": the format and the elements with their
+// properties; false for any other line, and for a property before the first element.
+inline bool read_PLY_header(Token_lines& lines, Ply_format& format, std::vector<Ply_element>& elements)
+{
   std::vector<std::string_view> tokens;
   if(!lines.next(tokens) || tokens.size() != 1 || tokens[0] != "ply" || !lines.next(tokens) || tokens.size() != 3
      || tokens[0] != "format")
     return false;
-  Format format;
   if(tokens[1] == "ascii")
     format = PLY_ASCII;
   else if(tokens[1] == "binary_little_endian")
@@ -450,7 +455,6 @@ bool read_PLY(const std::string& text, std::vector<Point>& points, std::vector<s
     format = PLY_BIG_ENDIAN;
   else
     return false;
-  std::vector<Element> elements;
   for(;;)
   {
     if(!lines.next(tokens))
@@ -461,51 +465,59 @@ bool read_PLY(const std::string& text, std::vector<Point>& points, std::vector<s
       continue;
     if(tokens[0] == "element" && tokens.size() == 3)
     {
-      elements.push_back(Element{std::string(tokens[1]), 0, {}});
+      elements.push_back(Ply_element{std::string(tokens[1]), 0, {}});
       if(!parse_count(tokens[2], elements.back().count))
         return false;
     }
     else if(tokens[0] == "property" && !elements.empty() && tokens.size() == 3)
     {
-      Property p{std::string(tokens[2]), false, {}, {}};
-      if(!type_of(tokens[1], p.value_type))
+      Ply_property p{std::string(tokens[2]), false, {}, {}};
+      if(!ply_type_of(tokens[1], p.value_type))
         return false;
       elements.back().properties.push_back(p);
     }
     else if(tokens[0] == "property" && !elements.empty() && tokens.size() == 5 && tokens[1] == "list")
     {
-      Property p{std::string(tokens[4]), true, {}, {}};
-      if(!type_of(tokens[2], p.count_type) || p.count_type.is_float || !type_of(tokens[3], p.value_type))
+      Ply_property p{std::string(tokens[4]), true, {}, {}};
+      if(!ply_type_of(tokens[2], p.count_type) || p.count_type.is_float || !ply_type_of(tokens[3], p.value_type))
         return false;
       elements.back().properties.push_back(p);
     }
     else
       return false;
   }
+  return true;
+}
 
-  // The body: values are read one at a time, as doubles (exact for every PLY integer type).
-  std::size_t at = lines.position();
-  Token_lines ascii_lines(text, at, '\0');
-  std::vector<std::string_view> line_tokens;
-  std::size_t next_token = 0;
-  auto read_value = [&](const Type& type, double& value) {
-    if(format == PLY_ASCII)
+// The body, from byte `at` on: values are read one at a time, as doubles (exact for every PLY
+// integer type), as whitespace-separated tokens in ASCII and as bytes in the file's byte order
+// otherwise.
+class Ply_value_reader
+{
+public:
+  Ply_value_reader(const std::string& text, std::size_t at, Ply_format format)
+    : text_(text), at_(at), format_(format), ascii_lines_(text, at, '\0')
+  {}
+
+  bool read(const Ply_type& type, double& value)
+  {
+    if(format_ == PLY_ASCII)
     {
-      while(next_token == line_tokens.size())
+      while(next_token_ == line_tokens_.size())
       {
-        if(!ascii_lines.next(line_tokens))
+        if(!ascii_lines_.next(line_tokens_))
           return false;
-        next_token = 0;
+        next_token_ = 0;
       }
-      return parse_double(line_tokens[next_token++], value);
+      return parse_double(line_tokens_[next_token_++], value);
     }
-    if(text.size() - at < type.size)
+    if(text_.size() - at_ < type.size)
       return false;
-    const char* p = text.data() + at;
-    at += type.size;
-    const std::uint64_t bits = load_unsigned(p, type.size, format == PLY_BIG_ENDIAN);
+    const char* p = text_.data() + at_;
+    at_ += type.size;
+    const std::uint64_t bits = load_unsigned(p, type.size, format_ == PLY_BIG_ENDIAN);
     if(type.is_float && type.size == 4)
-      value = load_float32(p, format == PLY_BIG_ENDIAN);
+      value = load_float32(p, format_ == PLY_BIG_ENDIAN);
     else if(type.is_float)
     {
       double d;
@@ -517,84 +529,135 @@ bool read_PLY(const std::string& text, std::vector<Point>& points, std::vector<s
     else
       value = double(bits);
     return true;
-  };
-  // An integer-valued number in [0, bound): a list length or a vertex index.
-  auto as_index = [](double value, std::size_t bound, std::size_t& index) {
-    if(!(value >= 0. && value < double(bound) && value == std::floor(value)))
-      return false;
-    index = static_cast<std::size_t>(value);
-    return true;
-  };
+  }
 
-  for(const Element& element : elements)
+  // The bytes not read yet (in ASCII, all those after the header: the tokens are read by lines,
+  // not counted in bytes).
+  std::size_t remaining() const { return text_.size() - at_; }
+
+  // A bound on the length of a list of `type` values read now: above it the values cannot fit
+  // in the bytes left (in ASCII, in the whole text).
+  std::size_t list_length_bound(const Ply_type& type) const
   {
-    if(element.properties.empty())
-    {
-      if(element.count > 0)
-        return false;
-      continue;
-    }
-    // A record takes at least one byte per scalar property, and per list length.
-    if(element.count > (text.size() - at) / element.properties.size())
-      return false;
-    const bool is_vertex = (element.name == "vertex"), is_face = (element.name == "face");
-    std::array<int, 3> xyz{{-1, -1, -1}};
-    int face_list = -1;
-    for(std::size_t k = 0; k < element.properties.size(); ++k)
-    {
-      const Property& p = element.properties[k];
-      if(is_vertex && !p.is_list && p.name.size() == 1 && p.name[0] >= 'x' && p.name[0] <= 'z')
-        xyz[p.name[0] - 'x'] = int(k);
-      if(is_face && p.is_list && (p.name == "vertex_indices" || p.name == "vertex_index"))
-        face_list = int(k);
-    }
-    if(is_vertex && (xyz[0] < 0 || xyz[1] < 0 || xyz[2] < 0))
-      return false;
-    if(is_face && face_list < 0)
-      return false;
-    if(is_vertex)
-      points.reserve(element.count);
+    return (format_ == PLY_ASCII ? text_.size() : remaining()) / type.size + 1;
+  }
 
-    for(std::size_t r = 0; r < element.count; ++r)
+private:
+  const std::string& text_;
+  std::size_t at_;
+  Ply_format format_;
+  Token_lines ascii_lines_;
+  std::vector<std::string_view> line_tokens_;
+  std::size_t next_token_ = 0;
+};
+
+// An integer-valued number in [0, bound): a list length or a vertex index.
+inline bool ply_index(double value, std::size_t bound, std::size_t& index)
+{
+  if(!(value >= 0. && value < double(bound) && value == std::floor(value)))
+    return false;
+  index = static_cast<std::size_t>(value);
+  return true;
+}
+
+// The values of a list property whose length, `length_value`, was just read; with `is_face`, they
+// are the vertex indices of a new face, appended to `polygons`, and skipped otherwise.
+inline bool read_PLY_list(Ply_value_reader& values, const Ply_type& value_type, double length_value, bool is_face,
+                          std::vector<std::vector<std::size_t> >& polygons)
+{
+  std::size_t length = 0;
+  if(!ply_index(length_value, values.list_length_bound(value_type), length))
+    return false;
+  if(is_face)
+    polygons.emplace_back();
+  for(std::size_t i = 0; i < length; ++i)
+  {
+    double value = 0.;
+    if(!values.read(value_type, value))
+      return false;
+    std::size_t index = 0;
+    if(is_face)
     {
-      double coordinates[3] = {0., 0., 0.};
-      for(std::size_t k = 0; k < element.properties.size(); ++k)
-      {
-        const Property& p = element.properties[k];
-        double value = 0.;
-        if(!read_value(p.is_list ? p.count_type : p.value_type, value))
-          return false;
-        if(!p.is_list)
-        {
-          for(int c = 0; c < 3; ++c)
-            if(is_vertex && xyz[c] == int(k))
-              coordinates[c] = value;
-          continue;
-        }
-        std::size_t length = 0;
-        const std::size_t room = (format == PLY_ASCII ? text.size() : text.size() - at) / p.value_type.size + 1;
-        if(!as_index(value, room, length))
-          return false;
-        const bool wanted = is_face && face_list == int(k);
-        if(wanted)
-          polygons.emplace_back();
-        for(std::size_t i = 0; i < length; ++i)
-        {
-          if(!read_value(p.value_type, value))
-            return false;
-          std::size_t index = 0;
-          if(wanted)
-          {
-            if(!as_index(value, std::numeric_limits<std::uint32_t>::max(), index))
-              return false;
-            polygons.back().push_back(index);
-          }
-        }
-      }
-      if(is_vertex)
-        points.push_back(Point(coordinates[0], coordinates[1], coordinates[2]));
+      if(!ply_index(value, std::numeric_limits<std::uint32_t>::max(), index))
+        return false;
+      polygons.back().push_back(index);
     }
   }
+  return true;
+}
+
+// The records of one element: the x, y, z properties of a "vertex" element appended to `points`,
+// the vertex list of a "face" element to `polygons`, and the other properties and elements read
+// and skipped.
+template <typename Point>
+bool read_PLY_element(Ply_value_reader& values, const Ply_element& element, std::vector<Point>& points,
+                      std::vector<std::vector<std::size_t> >& polygons)
+{
+  if(element.properties.empty())
+    return element.count == 0;
+  // A record takes at least one byte per scalar property, and per list length.
+  if(element.count > values.remaining() / element.properties.size())
+    return false;
+  const bool is_vertex = (element.name == "vertex"), is_face = (element.name == "face");
+  std::array<int, 3> xyz{{-1, -1, -1}};
+  int face_list = -1;
+  for(std::size_t k = 0; k < element.properties.size(); ++k)
+  {
+    const Ply_property& p = element.properties[k];
+    if(is_vertex && !p.is_list && p.name.size() == 1 && p.name[0] >= 'x' && p.name[0] <= 'z')
+      xyz[p.name[0] - 'x'] = int(k);
+    if(is_face && p.is_list && (p.name == "vertex_indices" || p.name == "vertex_index"))
+      face_list = int(k);
+  }
+  if(is_vertex && (xyz[0] < 0 || xyz[1] < 0 || xyz[2] < 0))
+    return false;
+  if(is_face && face_list < 0)
+    return false;
+  if(is_vertex)
+    points.reserve(element.count);
+
+  for(std::size_t r = 0; r < element.count; ++r)
+  {
+    double coordinates[3] = {0., 0., 0.};
+    for(std::size_t k = 0; k < element.properties.size(); ++k)
+    {
+      const Ply_property& p = element.properties[k];
+      double value = 0.;
+      if(!values.read(p.is_list ? p.count_type : p.value_type, value))
+        return false;
+      if(!p.is_list)
+      {
+        for(int c = 0; c < 3; ++c)
+          if(is_vertex && xyz[c] == int(k))
+            coordinates[c] = value;
+        continue;
+      }
+      if(!read_PLY_list(values, p.value_type, value, is_face && face_list == int(k), polygons))
+        return false;
+    }
+    if(is_vertex)
+      points.push_back(Point(coordinates[0], coordinates[1], coordinates[2]));
+  }
+  return true;
+}
+
+// PLY: one "ply" line, a "format" line (ascii, binary_little_endian or binary_big_endian),
+// then elements with their scalar or list properties, up to "end_header". The points are the
+// x, y, z properties of the "vertex" element and the faces the "vertex_indices" (or
+// "vertex_index") list of the "face" element; other elements and properties are skipped.
+template <typename Point>
+bool read_PLY(const std::string& text, std::vector<Point>& points, std::vector<std::vector<std::size_t> >& polygons)
+{
+  Token_lines lines(text, 0, '\0');
+  Ply_format format = PLY_ASCII;
+  std::vector<Ply_element> elements;
+  if(!read_PLY_header(lines, format, elements))
+    return false;
+
+  Ply_value_reader values(text, lines.position(), format);
+  for(const Ply_element& element : elements)
+    if(!read_PLY_element(values, element, points, polygons))
+      return false;
   // Faces may come before the vertices: their indices are checked once all points are known.
   for(const std::vector<std::size_t>& polygon : polygons)
     for(std::size_t index : polygon)

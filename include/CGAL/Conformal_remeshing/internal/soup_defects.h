@@ -87,17 +87,23 @@ std::string describe_point(const Point& p)
   return out.str();
 }
 
-template <typename Kernel, typename PointRange, typename PolygonRange>
-std::vector<Defect_summary> find_soup_defects(const PointRange& points, const PolygonRange& polygons)
+// The corners of all faces, flattened in face order: face `f` has corners
+// `offsets[f]` to `offsets[f + 1] - 1`.
+template <typename PolygonRange>
+std::vector<std::size_t> soup_corner_offsets(const PolygonRange& polygons)
+{
+  const std::size_t nf = polygons.size();
+  std::vector<std::size_t> corner_offset(nf + 1, 0);
+  for(std::size_t f = 0; f < nf; ++f)
+    corner_offset[f + 1] = corner_offset[f] + polygons[f].size();
+  return corner_offset;
+}
+
+// Non-finite coordinates; returns, for each vertex, whether its coordinates are finite.
+template <typename PointRange>
+std::vector<bool> find_non_finite_vertices(const PointRange& points, Defect_counter& defects)
 {
   const std::size_t nv = points.size();
-  const std::size_t nf = polygons.size();
-  Defect_counter defects;
-
-  if(nf == 0)
-    defects.add(Mesh_defect::EMPTY_MESH, nv == 0 ? std::string("no vertex and no face")
-                                                 : std::to_string(nv) + " vertices but no face");
-
   std::vector<bool> finite(nv, true);
   for(std::size_t v = 0; v < nv; ++v)
   {
@@ -109,10 +115,20 @@ std::vector<Defect_summary> find_soup_defects(const PointRange& points, const Po
       defects.add(Mesh_defect::NON_FINITE_COORDINATES, "vertex " + std::to_string(v) + " at " + describe_point(p));
     }
   }
+  return finite;
+}
 
-  // Faces whose indices are all valid take part in the combinatorial checks.
-  std::vector<bool> usable(nf, true);
-  std::vector<bool> used(nv, false);
+// Invalid vertex indices, non-triangle faces and degenerate faces, face by face. `usable` tells
+// the faces that take part in the combinatorial checks (those whose indices are all valid and
+// that visit no vertex twice), `used` the vertices of the faces whose indices are all valid.
+template <typename Kernel, typename PointRange, typename PolygonRange>
+void find_face_defects(const PointRange& points, const PolygonRange& polygons, const std::vector<bool>& finite,
+                       Defect_counter& defects, std::vector<bool>& usable, std::vector<bool>& used)
+{
+  const std::size_t nv = points.size();
+  const std::size_t nf = polygons.size();
+  usable.assign(nf, true);
+  used.assign(nv, false);
   typename Kernel::Collinear_3 collinear = Kernel().collinear_3_object();
   for(std::size_t f = 0; f < nf; ++f)
   {
@@ -152,42 +168,52 @@ std::vector<Defect_summary> find_soup_defects(const PointRange& points, const Po
       defects.add(Mesh_defect::DEGENERATE_FACE, example.str());
     }
     // A face through one vertex twice runs along an edge both ways: the edge and fan checks
-    // below would report that one defect again as a non-manifold edge and vertices.
+    // would report that one defect again as a non-manifold edge and vertices.
     if(repeated)
       usable[f] = false;
   }
+}
 
-  // Duplicates: equal coordinates end up next to each other after a lexicographic sort.
-  {
-    std::vector<std::size_t> order;
-    order.reserve(nv);
-    for(std::size_t v = 0; v < nv; ++v)
-      if(finite[v])
-        order.push_back(v);
-    auto less = [&](std::size_t a, std::size_t b) {
-      const auto& p = points[a];
-      const auto& q = points[b];
-      if(p.x() != q.x()) return p.x() < q.x();
-      if(p.y() != q.y()) return p.y() < q.y();
-      if(p.z() != q.z()) return p.z() < q.z();
-      return a < b;
-    };
-    std::sort(order.begin(), order.end(), less);
-    for(std::size_t i = 1; i < order.size(); ++i)
-      if(points[order[i]] == points[order[i - 1]])
-        defects.add(Mesh_defect::DUPLICATED_VERTEX, "vertices " + std::to_string(order[i - 1]) + " and "
-                                                      + std::to_string(order[i]) + " at "
-                                                      + describe_point(points[order[i]]));
-  }
-
+// Duplicates: equal coordinates end up next to each other after a lexicographic sort.
+template <typename PointRange>
+void find_duplicated_vertices(const PointRange& points, const std::vector<bool>& finite, Defect_counter& defects)
+{
+  const std::size_t nv = points.size();
+  std::vector<std::size_t> order;
+  order.reserve(nv);
   for(std::size_t v = 0; v < nv; ++v)
+    if(finite[v])
+      order.push_back(v);
+  auto less = [&](std::size_t a, std::size_t b) {
+    const auto& p = points[a];
+    const auto& q = points[b];
+    if(p.x() != q.x()) return p.x() < q.x();
+    if(p.y() != q.y()) return p.y() < q.y();
+    if(p.z() != q.z()) return p.z() < q.z();
+    return a < b;
+  };
+  std::sort(order.begin(), order.end(), less);
+  for(std::size_t i = 1; i < order.size(); ++i)
+    if(points[order[i]] == points[order[i - 1]])
+      defects.add(Mesh_defect::DUPLICATED_VERTEX, "vertices " + std::to_string(order[i - 1]) + " and "
+                                                    + std::to_string(order[i]) + " at "
+                                                    + describe_point(points[order[i]]));
+}
+
+inline void find_isolated_vertices(const std::vector<bool>& used, Defect_counter& defects)
+{
+  for(std::size_t v = 0; v < used.size(); ++v)
     if(!used[v])
       defects.add(Mesh_defect::ISOLATED_VERTEX, "vertex " + std::to_string(v));
+}
 
-  // Edges: sort the sides of all edges so that the sides of one edge are adjacent.
-  std::vector<std::size_t> corner_offset(nf + 1, 0);
-  for(std::size_t f = 0; f < nf; ++f)
-    corner_offset[f + 1] = corner_offset[f] + polygons[f].size();
+// The sides of the edges of the usable faces, sorted so that the sides of one edge are
+// adjacent (and, within one edge, in face order).
+template <typename PolygonRange>
+std::vector<Soup_halfedge> sorted_soup_halfedges(const PolygonRange& polygons, const std::vector<bool>& usable,
+                                                 const std::vector<std::size_t>& corner_offset)
+{
+  const std::size_t nf = polygons.size();
   std::vector<Soup_halfedge> sides;
   sides.reserve(corner_offset[nf]);
   for(std::size_t f = 0; f < nf; ++f)
@@ -206,14 +232,32 @@ std::vector<Defect_summary> find_soup_defects(const PointRange& points, const Po
   std::sort(sides.begin(), sides.end(), [](const Soup_halfedge& a, const Soup_halfedge& b) {
     return a.key() < b.key() || (a.key() == b.key() && a.face < b.face);
   });
+  return sides;
+}
 
-  // Face adjacency across manifold edges; `same_direction` means the two faces traverse the
-  // edge the same way, i.e. they disagree on the orientation.
-  struct Adjacency { std::size_t other; bool same_direction; };
-  std::vector<std::vector<Adjacency> > adjacent(nf);
-  Union_find fans(corner_offset[nf]);
+// Face adjacency across a manifold edge; `same_direction` means the two faces traverse the
+// edge the same way, i.e. they disagree on the orientation.
+struct Soup_adjacency { std::size_t other; bool same_direction; };
+
+// What the edges tell about the faces around them: the adjacency of faces across manifold
+// edges, the fans of corners joined across these edges, and the edges whose two faces
+// disagree on the orientation (how many, and the first of them).
+struct Soup_edge_structure
+{
+  Soup_edge_structure(std::size_t nb_faces, std::size_t nb_corners) : adjacent(nb_faces), fans(nb_corners) {}
+
+  std::vector<std::vector<Soup_adjacency> > adjacent;
+  Union_find fans;
   std::size_t inconsistent_edges = 0;
   std::string inconsistent_example;
+};
+
+// Non-manifold edges (sides of more than two faces), and the structure of the faces joined
+// across the other edges, from the sides sorted by `sorted_soup_halfedges()`.
+inline Soup_edge_structure find_edge_defects(const std::vector<Soup_halfedge>& sides, std::size_t nb_faces,
+                                             std::size_t nb_corners, Defect_counter& defects)
+{
+  Soup_edge_structure edges(nb_faces, nb_corners);
   for(std::size_t first = 0; first < sides.size();)
   {
     std::size_t last = first + 1;
@@ -235,28 +279,36 @@ std::vector<Defect_summary> find_soup_defects(const PointRange& points, const Po
       const Soup_halfedge& a = sides[first];
       const Soup_halfedge& b = sides[first + 1];
       const bool same = (a.source == b.source);
-      adjacent[a.face].push_back(Adjacency{b.face, same});
-      adjacent[b.face].push_back(Adjacency{a.face, same});
+      edges.adjacent[a.face].push_back(Soup_adjacency{b.face, same});
+      edges.adjacent[b.face].push_back(Soup_adjacency{a.face, same});
       if(same)
       {
-        fans.unite(a.source_corner, b.source_corner);
-        fans.unite(a.target_corner, b.target_corner);
-        if(inconsistent_edges++ == 0)
-          inconsistent_example = "edge between vertices " + std::to_string(a.key().first) + " and "
-                                 + std::to_string(a.key().second) + " runs the same way in faces "
-                                 + std::to_string(a.face) + " and " + std::to_string(b.face);
+        edges.fans.unite(a.source_corner, b.source_corner);
+        edges.fans.unite(a.target_corner, b.target_corner);
+        if(edges.inconsistent_edges++ == 0)
+          edges.inconsistent_example = "edge between vertices " + std::to_string(a.key().first) + " and "
+                                       + std::to_string(a.key().second) + " runs the same way in faces "
+                                       + std::to_string(a.face) + " and " + std::to_string(b.face);
       }
       else
       {
-        fans.unite(a.source_corner, b.target_corner);
-        fans.unite(a.target_corner, b.source_corner);
+        edges.fans.unite(a.source_corner, b.target_corner);
+        edges.fans.unite(a.target_corner, b.source_corner);
       }
     }
     first = last;
   }
+  return edges;
+}
 
-  // Orientability: propagate a flip flag over each component; a contradiction means that no
-  // choice of orientations agrees along every edge.
+// Orientability: propagate a flip flag over each component; a contradiction means that no
+// choice of orientations agrees along every edge. Returns the number of non-orientable
+// components.
+inline std::size_t find_non_orientable_components(const std::vector<bool>& usable,
+                                                  const std::vector<std::vector<Soup_adjacency> >& adjacent,
+                                                  Defect_counter& defects)
+{
+  const std::size_t nf = usable.size();
   std::vector<int> flip(nf, -1);
   std::size_t non_orientable_components = 0;
   std::vector<std::size_t> stack;
@@ -271,7 +323,7 @@ std::vector<Defect_summary> find_soup_defects(const PointRange& points, const Po
     {
       const std::size_t f = stack.back();
       stack.pop_back();
-      for(const Adjacency& a : adjacent[f])
+      for(const Soup_adjacency& a : adjacent[f])
       {
         const int wanted = flip[f] ^ static_cast<int>(a.same_direction);
         if(flip[a.other] == -1)
@@ -289,17 +341,22 @@ std::vector<Defect_summary> find_soup_defects(const PointRange& points, const Po
       defects.add(Mesh_defect::NON_ORIENTABLE, "the component of face " + std::to_string(seed));
     }
   }
-  if(inconsistent_edges > 0 && non_orientable_components == 0)
-    for(std::size_t k = 0; k < inconsistent_edges; ++k)
-      defects.add(Mesh_defect::INCONSISTENT_ORIENTATION, inconsistent_example);
+  return non_orientable_components;
+}
 
-  // A manifold vertex has all its corners in one fan (corners joined across shared edges).
-  std::vector<std::vector<std::size_t> > corners_of(nv);
+// A manifold vertex has all its corners in one fan (corners joined across shared edges).
+template <typename PolygonRange>
+void find_non_manifold_vertices(const PolygonRange& polygons, std::size_t nb_vertices, const std::vector<bool>& usable,
+                                const std::vector<std::size_t>& corner_offset, Union_find& fans,
+                                Defect_counter& defects)
+{
+  const std::size_t nf = polygons.size();
+  std::vector<std::vector<std::size_t> > corners_of(nb_vertices);
   for(std::size_t f = 0; f < nf; ++f)
     if(usable[f])
       for(std::size_t i = 0; i < polygons[f].size(); ++i)
         corners_of[polygons[f][i]].push_back(corner_offset[f] + i);
-  for(std::size_t v = 0; v < nv; ++v)
+  for(std::size_t v = 0; v < nb_vertices; ++v)
   {
     std::vector<std::size_t> roots;
     for(std::size_t c : corners_of[v])
@@ -310,6 +367,39 @@ std::vector<Defect_summary> find_soup_defects(const PointRange& points, const Po
       defects.add(Mesh_defect::NON_MANIFOLD_VERTEX, "vertex " + std::to_string(v) + " joins "
                                                       + std::to_string(nb_fans) + " separate fans of faces");
   }
+}
+
+template <typename Kernel, typename PointRange, typename PolygonRange>
+std::vector<Defect_summary> find_soup_defects(const PointRange& points, const PolygonRange& polygons)
+{
+  const std::size_t nv = points.size();
+  const std::size_t nf = polygons.size();
+  Defect_counter defects;
+
+  if(nf == 0)
+    defects.add(Mesh_defect::EMPTY_MESH, nv == 0 ? std::string("no vertex and no face")
+                                                 : std::to_string(nv) + " vertices but no face");
+
+  const std::vector<bool> finite = find_non_finite_vertices(points, defects);
+
+  // Faces whose indices are all valid take part in the combinatorial checks.
+  std::vector<bool> usable, used;
+  find_face_defects<Kernel>(points, polygons, finite, defects, usable, used);
+
+  find_duplicated_vertices(points, finite, defects);
+  find_isolated_vertices(used, defects);
+
+  // Edges: sort the sides of all edges so that the sides of one edge are adjacent.
+  const std::vector<std::size_t> corner_offset = soup_corner_offsets(polygons);
+  const std::vector<Soup_halfedge> sides = sorted_soup_halfedges(polygons, usable, corner_offset);
+  Soup_edge_structure edges = find_edge_defects(sides, nf, corner_offset[nf], defects);
+
+  const std::size_t non_orientable_components = find_non_orientable_components(usable, edges.adjacent, defects);
+  if(edges.inconsistent_edges > 0 && non_orientable_components == 0)
+    for(std::size_t k = 0; k < edges.inconsistent_edges; ++k)
+      defects.add(Mesh_defect::INCONSISTENT_ORIENTATION, edges.inconsistent_example);
+
+  find_non_manifold_vertices(polygons, nv, usable, corner_offset, edges.fans, defects);
 
   return defects.summaries();
 }
