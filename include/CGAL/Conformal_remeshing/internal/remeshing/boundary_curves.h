@@ -8,13 +8,18 @@
 #define CGAL_CONFORMAL_REMESHING_INTERNAL_REMESHING_BOUNDARY_CURVES_H
 
 #include <CGAL/Conformal_remeshing/conformal_flatten.h>
-#include <CGAL/Conformal_remeshing/internal/remeshing/planar_mesher.h>
+#include <CGAL/Conformal_remeshing/internal/remeshing/boundary_sample.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/sizing.h>
 #include <CGAL/Conformal_remeshing/segment_into_poly_annuli.h>
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+
+#include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <map>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -106,45 +111,68 @@ std::vector<double> polyline_curvatures(const Mesh& m, const std::vector<Vertex>
   return curvature;
 }
 
-/// Splits the patch boundaries of `s` (edges between two patches, borders, and sharp features
-/// inside a patch, along which the patch is slit open) into curves
-/// between junctions (vertices where other than two boundary edges meet, where the pair of
-/// patches changes, or where the curve turns by more than `corner_degrees`, except on a cut
-/// beside a piece of cut shorter than `shortest_cut_piece` times the target), and samples each
-/// curve at spacing close to `sizing` (interpolated between the curve's vertices), divided by
-/// 2^`halvings[c]` on curve `c` when given (the curves are numbered in the same order by every
-/// call on the same segmentation), closer where a border bends (`border_chord_deviation`) and
-/// near the ends of tiny curves (`tiny_curve`).
-/// A curve that closes on itself gets at least 3 pieces, and a
-/// slit or two curves with the same ends at least 2 each, so every patch loop has 3 samples or more.
-inline Curve_samples sample_boundary_curves(const Poly_annulus_segmentation& s, const Sizing& sizing, double corner_degrees,
-                                            const std::vector<int>& halvings = std::vector<int>())
-{
-  typedef Poly_annulus_segmentation::Mesh Mesh;
-  typedef Mesh::Halfedge_index Halfedge;
-  typedef Curve_samples::Vertex Vertex;
-  const Mesh& m = s.mesh;
-  const std::size_t border = std::size_t(-1);
-  auto patch_of = [&](Halfedge h) { return m.is_border(h) ? border : s.patch[m.face(h)]; };
-  // By value: std::minmax of two temporaries returns references to them, dangling here.
-  auto sides = [&](Halfedge h) -> std::pair<std::size_t, std::size_t> {
-    return std::minmax(patch_of(h), patch_of(m.opposite(h)));
-  };
-  // the output keeps these edges' curves as chains of its edges; the other curve edges are cuts
-  auto is_kept_edge = [&](Mesh::Edge_index e) { return s.is_feature[e] || s.is_user_border[e] || m.is_border(e); };
+// The steps of `sample_boundary_curves()`.
 
+// The patch on the side of `h` in `s`, `std::size_t(-1)` on the border.
+inline std::size_t patch_beside(const Poly_annulus_segmentation& s, Poly_annulus_segmentation::Mesh::Halfedge_index h)
+{
+  const std::size_t border = std::size_t(-1);
+  return s.mesh.is_border(h) ? border : s.patch[s.mesh.face(h)];
+}
+
+// The patches on the two sides of the edge of `h`, smaller first. (By value: std::minmax of two
+// temporaries returns references to them, dangling here.)
+inline std::pair<std::size_t, std::size_t> patches_beside(const Poly_annulus_segmentation& s,
+                                                           Poly_annulus_segmentation::Mesh::Halfedge_index h)
+{
+  return std::minmax(patch_beside(s, h), patch_beside(s, s.mesh.opposite(h)));
+}
+
+// Whether the output keeps the curve of `e` as a chain of its edges: a feature, a user patch
+// border or the border; the other curve edges are cuts.
+inline bool is_kept_curve_edge(const Poly_annulus_segmentation& s, Poly_annulus_segmentation::Mesh::Edge_index e)
+{
+  return s.is_feature[e] || s.is_user_border[e] || s.mesh.is_border(e);
+}
+
+// A face of `m` beside the halfedge `h`: its own, or the opposite one on the border.
+inline Poly_annulus_segmentation::Face face_of_curve_halfedge(const Poly_annulus_segmentation::Mesh& m,
+                                                              Poly_annulus_segmentation::Mesh::Halfedge_index h)
+{
+  return m.is_border(h) ? m.face(m.opposite(h)) : m.face(h);
+}
+
+// The halfedges of the curve edges of `s` (`is_curve_edge()`) out of each vertex.
+inline std::vector<std::vector<Poly_annulus_segmentation::Mesh::Halfedge_index> >
+outgoing_curve_halfedges(const Poly_annulus_segmentation& s)
+{
+  typedef Poly_annulus_segmentation::Mesh::Halfedge_index Halfedge;
+  const Poly_annulus_segmentation::Mesh& m = s.mesh;
   std::vector<std::vector<Halfedge> > outgoing(m.number_of_vertices());
   for(auto e : m.edges())
     if(s.is_curve_edge(e))
       for(Halfedge h : {m.halfedge(e), m.opposite(m.halfedge(e))})
         outgoing[m.source(h)].push_back(h);
+  return outgoing;
+}
+
+// The curve ends of `s` (1 at a vertex, else 0): the vertices where other than two curve edges
+// meet (`outgoing`), where the pair of patches changes, or where the curve turns by more than
+// `corner_degrees`.
+inline std::vector<char> curve_junctions(const Poly_annulus_segmentation& s,
+                                         const std::vector<std::vector<Poly_annulus_segmentation::Mesh::Halfedge_index> >& outgoing,
+                                         double corner_degrees)
+{
+  typedef Poly_annulus_segmentation::Mesh::Halfedge_index Halfedge;
+  typedef Curve_samples::Vertex Vertex;
+  const Poly_annulus_segmentation::Mesh& m = s.mesh;
   std::vector<char> junction(m.number_of_vertices(), 0);
   for(Vertex v : m.vertices())
   {
     const std::vector<Halfedge>& out = outgoing[v];
     if(out.empty())
       continue;
-    if(out.size() != 2 || sides(out[0]) != sides(out[1]))
+    if(out.size() != 2 || patches_beside(s, out[0]) != patches_beside(s, out[1]))
     {
       junction[v] = 1;
       continue;
@@ -152,18 +180,28 @@ inline Curve_samples sample_boundary_curves(const Poly_annulus_segmentation& s, 
     const Epick::Vector_3 in = m.point(v) - m.point(m.target(out[0])), next = m.point(m.target(out[1])) - m.point(v);
     junction[v] = turn_angle(in, next) * 180. / CGAL_PI > corner_degrees;
   }
+  return junction;
+}
 
-  // A cut between patches follows input edges, and on a scan it zigzags: a turn above the corner
-  // angle between two pieces of cut, one of them shorter than `shortest_cut_piece` times the
-  // target, is no curve end: its samples, a short chord apart, would leave a sliver between them
-  // and the next output vertex. Features, borders and user borders keep their corners.
-  const double short_piece = shortest_cut_piece * sizing.target();
+// A cut between patches follows input edges, and on a scan it zigzags: a turn above the corner
+// angle between two pieces of cut, one of them shorter than `shortest_cut_piece` times the
+// `target` length, is no curve end: its samples, a short chord apart, would leave a sliver between
+// them and the next output vertex. Features, borders and user borders keep their corners. Clears
+// such turns in `junction`.
+inline void smooth_short_cut_turns(const Poly_annulus_segmentation& s,
+                                   const std::vector<std::vector<Poly_annulus_segmentation::Mesh::Halfedge_index> >& outgoing,
+                                   double target, std::vector<char>& junction)
+{
+  typedef Poly_annulus_segmentation::Mesh::Halfedge_index Halfedge;
+  typedef Curve_samples::Vertex Vertex;
+  const Poly_annulus_segmentation::Mesh& m = s.mesh;
+  const double short_piece = shortest_cut_piece * target;
   std::vector<Vertex> smoothed_turns;
   for(Vertex v : m.vertices())
   {
     const std::vector<Halfedge>& out = outgoing[v];
-    if(!junction[v] || out.size() != 2 || sides(out[0]) != sides(out[1]) || is_kept_edge(m.edge(out[0]))
-       || is_kept_edge(m.edge(out[1])))
+    if(!junction[v] || out.size() != 2 || patches_beside(s, out[0]) != patches_beside(s, out[1])
+       || is_kept_curve_edge(s, m.edge(out[0])) || is_kept_curve_edge(s, m.edge(out[1])))
       continue;
     for(Halfedge h : out)
     {
@@ -185,8 +223,18 @@ inline Curve_samples sample_boundary_curves(const Poly_annulus_segmentation& s, 
   }
   for(Vertex v : smoothed_turns)
     junction[v] = 0;
+}
 
-  // Curves as vertex polylines: first from every junction, then the closed curves left.
+// The curves of `m` as vertex polylines, each from a `junction` along the `outgoing` curve edges
+// to the next: first from every junction, then the closed curves left (their first vertex
+// repeated at the end).
+inline std::vector<std::vector<Curve_samples::Vertex> >
+trace_boundary_curves(const Poly_annulus_segmentation::Mesh& m,
+                      const std::vector<std::vector<Poly_annulus_segmentation::Mesh::Halfedge_index> >& outgoing,
+                      const std::vector<char>& junction)
+{
+  typedef Poly_annulus_segmentation::Mesh::Halfedge_index Halfedge;
+  typedef Curve_samples::Vertex Vertex;
   std::vector<std::vector<Vertex> > curves;
   std::vector<char> done(m.number_of_edges(), 0);
   auto trace = [&](Halfedge h) {
@@ -212,6 +260,194 @@ inline Curve_samples sample_boundary_curves(const Poly_annulus_segmentation& s, 
     for(Halfedge h : outgoing[v])
       if(!done[m.edge(h)])
         trace(h);
+  return curves;
+}
+
+// Whether the output keeps each of the `curves` (1, else 0): whether any of its edges is kept
+// (`is_kept_curve_edge()`).
+inline std::vector<char> kept_curves(const Poly_annulus_segmentation& s, const std::vector<std::vector<Curve_samples::Vertex> >& curves)
+{
+  const Poly_annulus_segmentation::Mesh& m = s.mesh;
+  std::vector<char> is_kept_curve;
+  for(const auto& curve : curves)
+  {
+    bool kept = false;
+    for(std::size_t i = 0; i + 1 < curve.size() && !kept; ++i)
+    {
+      kept = is_kept_curve_edge(s, m.edge(m.halfedge(curve[i], curve[i + 1])));
+    }
+    is_kept_curve.push_back(kept);
+  }
+  return is_kept_curve;
+}
+
+// The length of the shortest curve other than `c` at `end` (`curves_at`: the curves that end at
+// each vertex), if it is tiny (`tiny_curve` times the `target` length), else infinity.
+inline double tiny_curve_grading_start(std::size_t c, Curve_samples::Vertex end,
+                                       const std::map<Curve_samples::Vertex, std::vector<std::size_t> >& curves_at,
+                                       const std::vector<double>& curve_length, double target)
+{
+  double shortest = std::numeric_limits<double>::infinity();
+  for(std::size_t other : curves_at.at(end))
+    if(other != c)
+      shortest = (std::min)(shortest, curve_length[other]);
+  return shortest < tiny_curve * target ? shortest : std::numeric_limits<double>::infinity();
+}
+
+// A piece of a curve to sample: the part from `t0` to `t1` of its `edge`-th edge, worth `units`
+// of the curve's spacing.
+struct Curve_piece
+{
+  std::size_t edge;
+  double t0, t1, units;
+};
+
+// The curve in pieces, each weighted by the target over the local size: whole edges where
+// the sizing is uniform (their lengths), else pieces of an edge at most half the local size
+// long (trapezoidal rule), so that a long input edge is sampled as finely as the faces
+// beside it are meshed; on a border, also by how much closer its bend needs the samples.
+// `curve_spacing` is the curve's spacing at the target size, `curve_length` its length and
+// `grade_front`, `grade_back` the spacings at its ends near a tiny curve
+// (`tiny_curve_grading_start()`). Adds the pieces' units to `total`.
+inline std::vector<Curve_piece> curve_pieces(const Poly_annulus_segmentation::Mesh& m, const std::vector<Curve_samples::Vertex>& curve,
+                                             const Sizing& sizing, double curve_spacing, double curve_length,
+                                             double grade_front, double grade_back, double& total)
+{
+  typedef Poly_annulus_segmentation::Mesh::Halfedge_index Halfedge;
+  std::vector<Curve_piece> pieces_of_curve;
+  const Halfedge first_edge = m.halfedge(curve[0], curve[1]);
+  const bool border = m.is_border(m.edge(first_edge));
+  const std::vector<double> curvature = border ? polyline_curvatures(m, curve) : std::vector<double>();
+  // how many times closer than `spacing` the samples on the curve's `i`-th edge must be
+  auto closer_on_bend = [&](std::size_t i, double spacing) {
+    if(!border)
+      return 1.;
+    const double bend = (std::max)(curvature[i], curvature[i + 1]);
+    // a chord of length l on a circle of curvature k stands k l^2 / 8 off it
+    const double closer = std::sqrt(bend * spacing / (8. * border_chord_deviation));
+    return (std::min)(1. / closest_border_samples, (std::max)(1., closer));
+  };
+  // The spacing near a tiny curve at either end (see `tiny_curve`), at arc length `s`; it is
+  // concave in `s`, so the smallest over an edge is at one of its ends.
+  auto graded = [&](double s) {
+    return (std::min)(grade_front + boundary_grading * s, grade_back + boundary_grading * (curve_length - s));
+  };
+  double along = 0.; // the arc length after edge i
+  for(std::size_t i = 0; i + 1 < curve.size(); ++i)
+  {
+    const double length = std::sqrt(CGAL::squared_distance(m.point(curve[i]), m.point(curve[i + 1])));
+    const double start = along; // the arc length before edge i
+    along += length;
+    const double graded_here = (std::min)(graded(start), graded(along));
+    if(sizing.is_uniform() && !(graded_here < sizing.target()))
+    {
+      const double units = length * closer_on_bend(i, curve_spacing);
+      pieces_of_curve.push_back(Curve_piece{i, 0., 1., units});
+      total += units;
+      continue;
+    }
+    const double smallest = (std::min)({sizing.at(curve[i]), sizing.at(curve[i + 1]), graded_here});
+    const double closer = closer_on_bend(i, smallest * curve_spacing / sizing.target());
+    const int n = int((std::min)(256., std::ceil(2. * length / smallest)));
+    double size0 = (std::min)(sizing.at(curve[i]), graded(start));
+    for(int j = 0; j < n; ++j)
+    {
+      const double t0 = double(j) / n, t1 = double(j + 1) / n;
+      const double size1 = (std::min)(j + 1 == n ? sizing.at(curve[i + 1]) : sizing.at(curve[i], curve[i + 1], t1), graded(start + t1 * length));
+      const double units = closer * (t1 - t0) * length * 0.5 * (sizing.target() / size0 + sizing.target() / size1);
+      pieces_of_curve.push_back(Curve_piece{i, t0, t1, units});
+      total += units;
+      size0 = size1;
+    }
+  }
+  return pieces_of_curve;
+}
+
+// The sample of `samples` at the vertex `v`, added if there is none yet, with a face beside one
+// of the curve edges out of it (`outgoing`).
+inline void add_vertex_sample(const Poly_annulus_segmentation::Mesh& m,
+                              const std::vector<std::vector<Poly_annulus_segmentation::Mesh::Halfedge_index> >& outgoing,
+                              Curve_samples::Vertex v, Curve_samples& samples)
+{
+  auto found = samples.at_vertex.find(v);
+  if(found != samples.at_vertex.end())
+    return;
+  samples.at_vertex[v] = samples.points.size();
+  samples.points.push_back(m.point(v));
+  samples.face.push_back(face_of_curve_halfedge(m, outgoing[v].front()));
+}
+
+// Samples the `c`-th curve, `curve`, into `samples`: its ends, and between them points evenly
+// spaced along its `pieces_of_curve` (`curve_pieces()`, `total` units in all), as many pieces as
+// the spacing `curve_spacing` gives (with the fewest each curve needs); the chords between
+// consecutive samples are recorded as the curve's. `curves_between` counts the curves between
+// each pair of ends (smaller first).
+inline void place_curve_samples(const Poly_annulus_segmentation& s,
+                                const std::vector<std::vector<Poly_annulus_segmentation::Mesh::Halfedge_index> >& outgoing,
+                                const std::vector<Curve_samples::Vertex>& curve, std::size_t c,
+                                const std::vector<Curve_piece>& pieces_of_curve, double total, double curve_spacing,
+                                const std::map<std::pair<Curve_samples::Vertex, Curve_samples::Vertex>, int>& curves_between,
+                                Curve_samples& samples)
+{
+  typedef Poly_annulus_segmentation::Mesh::Halfedge_index Halfedge;
+  const Poly_annulus_segmentation::Mesh& m = s.mesh;
+  const Halfedge first_edge = m.halfedge(curve[0], curve[1]);
+  // A slit (a feature inside a patch, the same patch on both sides) is traversed once per side
+  // by the same loop: with one piece, a slit whose ends are both free would be a loop of two
+  // samples, a polygon of no area in the plane.
+  const bool slit = patch_beside(s, first_edge) == patch_beside(s, m.opposite(first_edge));
+  const std::size_t fewest = curve.front() == curve.back() ? 3
+                             : (slit || curves_between.at(std::minmax(curve.front(), curve.back())) > 1) ? 2 : 1;
+  const std::size_t pieces = (std::max<std::size_t>)(fewest, std::size_t(std::round(total / curve_spacing)));
+  const double step = total / double(pieces);
+  add_vertex_sample(m, outgoing, curve.front(), samples);
+  add_vertex_sample(m, outgoing, curve.back(), samples);
+  std::size_t previous = samples.at_vertex[curve.front()];
+  auto chord_to = [&](std::size_t next) {
+    samples.curve_of_chord[std::minmax(previous, next)] = c;
+    previous = next;
+  };
+  std::size_t piece = 0;
+  double before = 0.; // curve units before the piece
+  for(std::size_t k = 1; k < pieces; ++k)
+  {
+    const double at = step * double(k);
+    while(before + pieces_of_curve[piece].units < at && piece + 1 < pieces_of_curve.size())
+      before += pieces_of_curve[piece++].units;
+    const Curve_piece& p = pieces_of_curve[piece];
+    const std::size_t e = p.edge;
+    const double t = p.t0 + (p.t1 - p.t0) * (std::min)(1., (std::max)(0., (at - before) / p.units));
+    const Epick::Point_3 &a = m.point(curve[e]), &b = m.point(curve[e + 1]);
+    const Halfedge h = m.halfedge(curve[e], curve[e + 1]);
+    const bool forward = curve[e] < curve[e + 1];
+    samples.on_edge[std::minmax(curve[e], curve[e + 1])].emplace_back(forward ? t : 1. - t, samples.points.size());
+    chord_to(samples.points.size());
+    samples.points.push_back(Epick::Point_3(a.x() + t * (b.x() - a.x()), a.y() + t * (b.y() - a.y()), a.z() + t * (b.z() - a.z())));
+    samples.face.push_back(face_of_curve_halfedge(m, h));
+  }
+  chord_to(samples.at_vertex[curve.back()]);
+}
+
+/// Splits the patch boundaries of `s` (edges between two patches, borders, and sharp features
+/// inside a patch, along which the patch is slit open) into curves
+/// between junctions (vertices where other than two boundary edges meet, where the pair of
+/// patches changes, or where the curve turns by more than `corner_degrees`, except on a cut
+/// beside a piece of cut shorter than `shortest_cut_piece` times the target), and samples each
+/// curve at spacing close to `sizing` (interpolated between the curve's vertices), divided by
+/// 2^`halvings[c]` on curve `c` when given (the curves are numbered in the same order by every
+/// call on the same segmentation), closer where a border bends (`border_chord_deviation`) and
+/// near the ends of tiny curves (`tiny_curve`).
+/// A curve that closes on itself gets at least 3 pieces, and a
+/// slit or two curves with the same ends at least 2 each, so every patch loop has 3 samples or more.
+inline Curve_samples sample_boundary_curves(const Poly_annulus_segmentation& s, const Sizing& sizing, double corner_degrees,
+                                            const std::vector<int>& halvings = std::vector<int>())
+{
+  typedef Curve_samples::Vertex Vertex;
+  const Poly_annulus_segmentation::Mesh& m = s.mesh;
+  const std::vector<std::vector<Poly_annulus_segmentation::Mesh::Halfedge_index> > outgoing = outgoing_curve_halfedges(s);
+  std::vector<char> junction = curve_junctions(s, outgoing, corner_degrees);
+  smooth_short_cut_turns(s, outgoing, sizing.target(), junction);
+  const std::vector<std::vector<Vertex> > curves = trace_boundary_curves(m, outgoing, junction);
 
   std::map<std::pair<Vertex, Vertex>, int> curves_between;
   for(const auto& curve : curves)
@@ -226,130 +462,20 @@ inline Curve_samples sample_boundary_curves(const Poly_annulus_segmentation& s, 
     curves_at[curves[c].front()].push_back(c);
     curves_at[curves[c].back()].push_back(c);
   }
-  // The length of the shortest curve other than `c` at `end`, if it is tiny, else infinity.
-  auto grading_start = [&](std::size_t c, Vertex end) {
-    double shortest = std::numeric_limits<double>::infinity();
-    for(std::size_t other : curves_at.at(end))
-      if(other != c)
-        shortest = (std::min)(shortest, curve_length[other]);
-    return shortest < tiny_curve * sizing.target() ? shortest : std::numeric_limits<double>::infinity();
-  };
 
   Curve_samples samples;
   samples.number_of_curves = curves.size();
-  for(const auto& curve : curves)
-  {
-    bool kept = false;
-    for(std::size_t i = 0; i + 1 < curve.size() && !kept; ++i)
-    {
-      kept = is_kept_edge(m.edge(m.halfedge(curve[i], curve[i + 1])));
-    }
-    samples.is_kept_curve.push_back(kept);
-  }
-  auto any_face = [&](Halfedge h) { return m.is_border(h) ? m.face(m.opposite(h)) : m.face(h); };
-  auto vertex_sample = [&](Vertex v) {
-    auto found = samples.at_vertex.find(v);
-    if(found != samples.at_vertex.end())
-      return;
-    samples.at_vertex[v] = samples.points.size();
-    samples.points.push_back(m.point(v));
-    samples.face.push_back(any_face(outgoing[v].front()));
-  };
+  samples.is_kept_curve = kept_curves(s, curves);
   for(std::size_t c = 0; c < curves.size(); ++c)
   {
     const std::vector<Vertex>& curve = curves[c];
-    // The curve in pieces, each weighted by the target over the local size: whole edges where
-    // the sizing is uniform (their lengths), else pieces of an edge at most half the local size
-    // long (trapezoidal rule), so that a long input edge is sampled as finely as the faces
-    // beside it are meshed; on a border, also by how much closer its bend needs the samples.
     const double curve_spacing = c < halvings.size() ? std::ldexp(sizing.target(), -halvings[c]) : sizing.target();
-    struct Piece
-    {
-      std::size_t edge;
-      double t0, t1, units;
-    };
-    std::vector<Piece> pieces_of_curve;
+    const double grade_front = tiny_curve_grading_start(c, curve.front(), curves_at, curve_length, sizing.target()),
+                 grade_back = tiny_curve_grading_start(c, curve.back(), curves_at, curve_length, sizing.target());
     double total = 0.;
-    const Halfedge first_edge = m.halfedge(curve[0], curve[1]);
-    const bool border = m.is_border(m.edge(first_edge));
-    const std::vector<double> curvature = border ? polyline_curvatures(m, curve) : std::vector<double>();
-    // how many times closer than `spacing` the samples on the curve's `i`-th edge must be
-    auto closer_on_bend = [&](std::size_t i, double spacing) {
-      if(!border)
-        return 1.;
-      const double bend = (std::max)(curvature[i], curvature[i + 1]);
-      // a chord of length l on a circle of curvature k stands k l^2 / 8 off it
-      const double closer = std::sqrt(bend * spacing / (8. * border_chord_deviation));
-      return (std::min)(1. / closest_border_samples, (std::max)(1., closer));
-    };
-    // The spacing near a tiny curve at either end (see `tiny_curve`), at arc length `s`; it is
-    // concave in `s`, so the smallest over an edge is at one of its ends.
-    const double grade_front = grading_start(c, curve.front()), grade_back = grading_start(c, curve.back());
-    auto graded = [&](double s) {
-      return (std::min)(grade_front + boundary_grading * s, grade_back + boundary_grading * (curve_length[c] - s));
-    };
-    double along = 0.; // the arc length after edge i
-    for(std::size_t i = 0; i + 1 < curve.size(); ++i)
-    {
-      const double length = std::sqrt(CGAL::squared_distance(m.point(curve[i]), m.point(curve[i + 1])));
-      const double start = along; // the arc length before edge i
-      along += length;
-      const double graded_here = (std::min)(graded(start), graded(along));
-      if(sizing.is_uniform() && !(graded_here < sizing.target()))
-      {
-        const double units = length * closer_on_bend(i, curve_spacing);
-        pieces_of_curve.push_back(Piece{i, 0., 1., units});
-        total += units;
-        continue;
-      }
-      const double smallest = (std::min)({sizing.at(curve[i]), sizing.at(curve[i + 1]), graded_here});
-      const double closer = closer_on_bend(i, smallest * curve_spacing / sizing.target());
-      const int n = int((std::min)(256., std::ceil(2. * length / smallest)));
-      double size0 = (std::min)(sizing.at(curve[i]), graded(start));
-      for(int j = 0; j < n; ++j)
-      {
-        const double t0 = double(j) / n, t1 = double(j + 1) / n;
-        const double size1 = (std::min)(j + 1 == n ? sizing.at(curve[i + 1]) : sizing.at(curve[i], curve[i + 1], t1), graded(start + t1 * length));
-        const double units = closer * (t1 - t0) * length * 0.5 * (sizing.target() / size0 + sizing.target() / size1);
-        pieces_of_curve.push_back(Piece{i, t0, t1, units});
-        total += units;
-        size0 = size1;
-      }
-    }
-    // A slit (a feature inside a patch, the same patch on both sides) is traversed once per side
-    // by the same loop: with one piece, a slit whose ends are both free would be a loop of two
-    // samples, a polygon of no area in the plane.
-    const bool slit = patch_of(first_edge) == patch_of(m.opposite(first_edge));
-    const std::size_t fewest = curve.front() == curve.back() ? 3
-                               : (slit || curves_between[std::minmax(curve.front(), curve.back())] > 1) ? 2 : 1;
-    const std::size_t pieces = (std::max<std::size_t>)(fewest, std::size_t(std::round(total / curve_spacing)));
-    const double step = total / double(pieces);
-    vertex_sample(curve.front());
-    vertex_sample(curve.back());
-    std::size_t previous = samples.at_vertex[curve.front()];
-    auto chord_to = [&](std::size_t next) {
-      samples.curve_of_chord[std::minmax(previous, next)] = c;
-      previous = next;
-    };
-    std::size_t piece = 0;
-    double before = 0.; // curve units before the piece
-    for(std::size_t k = 1; k < pieces; ++k)
-    {
-      const double at = step * double(k);
-      while(before + pieces_of_curve[piece].units < at && piece + 1 < pieces_of_curve.size())
-        before += pieces_of_curve[piece++].units;
-      const Piece& p = pieces_of_curve[piece];
-      const std::size_t e = p.edge;
-      const double t = p.t0 + (p.t1 - p.t0) * (std::min)(1., (std::max)(0., (at - before) / p.units));
-      const Epick::Point_3 &a = m.point(curve[e]), &b = m.point(curve[e + 1]);
-      const Halfedge h = m.halfedge(curve[e], curve[e + 1]);
-      const bool forward = curve[e] < curve[e + 1];
-      samples.on_edge[std::minmax(curve[e], curve[e + 1])].emplace_back(forward ? t : 1. - t, samples.points.size());
-      chord_to(samples.points.size());
-      samples.points.push_back(Epick::Point_3(a.x() + t * (b.x() - a.x()), a.y() + t * (b.y() - a.y()), a.z() + t * (b.z() - a.z())));
-      samples.face.push_back(any_face(h));
-    }
-    chord_to(samples.at_vertex[curve.back()]);
+    const std::vector<Curve_piece> pieces_of_curve =
+      curve_pieces(m, curve, sizing, curve_spacing, curve_length[c], grade_front, grade_back, total);
+    place_curve_samples(s, outgoing, curve, c, pieces_of_curve, total, curve_spacing, curves_between, samples);
   }
   for(auto& edge : samples.on_edge)
     std::sort(edge.second.begin(), edge.second.end());

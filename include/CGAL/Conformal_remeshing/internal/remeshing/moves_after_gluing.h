@@ -21,6 +21,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstddef>
 #include <limits>
 #include <utility>
 #include <vector>
@@ -101,6 +102,171 @@ inline std::vector<char> points_around_cuts(const Curve_samples& samples, const 
 /// skewness and distances to the input on a scanned model.)
 constexpr double largest_cut_off = 0.05;
 
+// The steps of `move_points_after_gluing()`.
+
+// The star of each point `v` with `movable[v]` of a soup of `triangles` on `number_of_points`
+// points: the other corners of its triangles, in order.
+inline std::vector<std::vector<std::pair<std::size_t, std::size_t> > >
+movable_stars(const std::vector<std::array<std::size_t, 3> >& triangles, const std::vector<char>& movable, std::size_t number_of_points)
+{
+  std::vector<std::vector<std::pair<std::size_t, std::size_t> > > star(number_of_points); // the other corners, in order
+  for(const auto& t : triangles)
+    for(int k = 0; k < 3; ++k)
+      if(movable[t[k]])
+        star[t[k]].emplace_back(t[(k + 1) % 3], t[(k + 2) % 3]);
+  return star;
+}
+
+// The bounds every move after gluing keeps: the cosines of the target angle and of the largest
+// turn of a triangle, and the squared longest edge.
+struct Move_bounds
+{
+  double cos_target, cos_turn, longest_squared;
+};
+
+// A star with its vertex at a trial place (see `star_at_point()`).
+struct Star_at
+{
+  bool allowed = true;
+  double skewness = 0., worst_cosine = -1.;
+  int below = 0;
+};
+
+// The star `ring` of v with v at x: its summed skewness, the cosine of its smallest angle and its
+// triangles below the target, and whether x keeps the bounds (`limit`: the largest cosine of a
+// smallest angle allowed). `normals` are the unit normals of the star's triangles with v where
+// it is, `mean_edge` the mean length of its edges there, `original` the points where they first
+// were.
+inline Star_at star_at_point(const std::vector<Epick::Point_3>& points, const std::vector<Epick::Point_3>& original,
+                             const std::vector<std::pair<std::size_t, std::size_t> >& ring, std::size_t v, const Epick::Point_3& x,
+                             double limit, const std::vector<Epick::Vector_3>& normals, double mean_edge, const Move_bounds& bounds)
+{
+  typedef Epick::Point_3 Point_3;
+  Star_at result;
+  double cut_off = std::numeric_limits<double>::infinity();
+  for(std::size_t i = 0; i < ring.size(); ++i)
+  {
+    const Point_3 &q = points[ring[i].first], &r = points[ring[i].second];
+    const double c = Triangle_shape::min_angle_cosine(x, q, r);
+    if(!(Triangle_shape::unit_normal(x, q, r) * normals[i] >= bounds.cos_turn) || c > limit
+       || CGAL::squared_distance(x, q) > (std::max)(bounds.longest_squared, CGAL::squared_distance(points[v], q)))
+      result.allowed = false;
+    result.skewness += Triangle_shape::skewness(x, q, r);
+    result.worst_cosine = (std::max)(result.worst_cosine, c);
+    result.below += c > bounds.cos_target;
+    // The star must not cut the surface off where the point was first (a turn of a cut at an
+    // input vertex is often a crease): the distance from there to the moved star is bounded.
+    cut_off = (std::min)(cut_off, CGAL::squared_distance(original[v], Epick::Triangle_3(x, q, r)));
+  }
+  if(cut_off > CGAL::square(largest_cut_off * mean_edge))
+    result.allowed = false;
+  return result;
+}
+
+// Looks for a better place for the point at `p` on `face`: `better(x)` says whether its star
+// with it at the surface point x is better than at the best place so far, and if so makes x the
+// best; a step toward the star's centroid first, when `to_centroid` is given, then a compass
+// search in the tangent plane (of `normal`) around where that ended, with steps from a tenth of
+// `mean_edge` down to a fortieth. Returns the best place, the point's own if none was better.
+template <typename Better>
+std::pair<Epick::Point_3, Poly_annulus_segmentation::Face>
+search_star_place(const Poly_annulus_segmentation& s, const Epick::Point_3& p, Poly_annulus_segmentation::Face face,
+                  const Epick::Vector_3* to_centroid, const Epick::Vector_3& normal, double mean_edge, const Better& better,
+                  std::vector<Poly_annulus_segmentation::Face>& visited)
+{
+  typedef Epick::Vector_3 Vector_3;
+  typedef std::pair<Epick::Point_3, Poly_annulus_segmentation::Face> Located;
+  Located best(p, face), located;
+  auto try_step = [&](const Vector_3& step) {
+    located = closest_point_nearby(s, face, p + step, 2. * std::sqrt(step.squared_length()) + 1e-3 * mean_edge, visited);
+    if(!better(located.first))
+      return false;
+    best = located;
+    return true;
+  };
+  if(to_centroid != nullptr)
+    for(double t : {1., 0.5, 0.25})
+      if(try_step(t * *to_centroid))
+        break;
+  const Vector_3 n = normal / std::sqrt(normal.squared_length());
+  Vector_3 e1 = CGAL::cross_product(n, std::abs(n.x()) < 0.6 ? Vector_3(1., 0., 0.) : Vector_3(0., 1., 0.));
+  e1 = e1 / std::sqrt(e1.squared_length());
+  const Vector_3 e2 = CGAL::cross_product(n, e1);
+  for(double length = 0.1 * mean_edge; length >= 0.1 * mean_edge / 4.; length *= 0.5)
+    for(const Vector_3& d : {e1, e2, -e1, -e2})
+      try_step((best.first - p) + length * d);
+  return best;
+}
+
+// One move of `move_points_after_gluing()` of the movable point `v`, whose star `ring` is not
+// empty: to a place of lower summed skewness of its star, or with `raise_angles`, of a larger
+// smallest angle when it is below the target. `normals` is room for the star's normals.
+// Returns whether it moved `v` (`points[v]` and `point_face[v]`).
+inline bool move_point_after_gluing(const Poly_annulus_segmentation& s, std::vector<Epick::Point_3>& points,
+                                    std::vector<Poly_annulus_segmentation::Face>& point_face,
+                                    const std::vector<Epick::Point_3>& original,
+                                    const std::vector<std::pair<std::size_t, std::size_t> >& ring, std::size_t v,
+                                    bool raise_angles, const Move_bounds& bounds, std::vector<Epick::Vector_3>& normals,
+                                    std::vector<Poly_annulus_segmentation::Face>& visited)
+{
+  typedef Epick::Point_3 Point_3;
+  typedef Epick::Vector_3 Vector_3;
+  typedef std::pair<Point_3, Poly_annulus_segmentation::Face> Located;
+  const Point_3 p = points[v];
+  double edge_sum = 0., weight = 0.;
+  Vector_3 centroid = CGAL::NULL_VECTOR, normal = CGAL::NULL_VECTOR;
+  normals.clear();
+  for(const auto& qr : ring)
+  {
+    const Point_3 &q = points[qr.first], &r = points[qr.second];
+    edge_sum += std::sqrt(CGAL::squared_distance(p, q));
+    const Vector_3 n = CGAL::cross_product(q - p, r - p);
+    const double area = std::sqrt(n.squared_length());
+    weight += area;
+    centroid = centroid + area * ((p - CGAL::ORIGIN) + (q - CGAL::ORIGIN) + (r - CGAL::ORIGIN)) / 3.;
+    normal = normal + n;
+    normals.push_back(Triangle_shape::unit_normal(p, q, r));
+  }
+  if(!(weight > 0.) || !(normal.squared_length() > 0.))
+    return false;
+  const double mean_edge = edge_sum / double(ring.size());
+  const Star_at now = star_at_point(points, original, ring, v, p, std::numeric_limits<double>::infinity(), normals, mean_edge, bounds);
+  Located best;
+  if(!raise_angles)
+  {
+    const double limit = (std::max)(bounds.cos_target, now.worst_cosine);
+    double best_energy = now.skewness;
+    const Vector_3 to_centroid = (CGAL::ORIGIN + centroid / weight) - p;
+    best = search_star_place(s, points[v], point_face[v], &to_centroid, normal, mean_edge, [&](const Point_3& x) {
+      const Star_at at = star_at_point(points, original, ring, v, x, limit, normals, mean_edge, bounds);
+      if(!at.allowed || !(at.skewness < best_energy))
+        return false;
+      best_energy = at.skewness;
+      return true;
+    }, visited);
+    if(!(best_energy < now.skewness - 1e-6))
+      return false;
+  }
+  else
+  {
+    if(!(now.worst_cosine > bounds.cos_target))
+      return false;
+    double best_worst = now.worst_cosine;
+    best = search_star_place(s, points[v], point_face[v], nullptr, normal, mean_edge, [&](const Point_3& x) {
+      const Star_at at = star_at_point(points, original, ring, v, x, best_worst, normals, mean_edge, bounds);
+      if(!at.allowed || !(at.worst_cosine < best_worst) || at.below > now.below)
+        return false;
+      best_worst = at.worst_cosine;
+      return true;
+    }, visited);
+    if(!(best_worst < now.worst_cosine - 1e-9))
+      return false;
+  }
+  points[v] = best.first;
+  point_face[v] = best.second;
+  return true;
+}
+
 /// Moves the points `i` with `movable[i]` of a glued triangle soup (consistently oriented, a
 /// manifold) on the segmented surface, by a Lloyd-like step toward the area-weighted centroid of
 /// their star and a compass search in their tangent plane, each point projected onto the nearby
@@ -120,78 +286,11 @@ inline std::size_t move_points_after_gluing(const Poly_annulus_segmentation& s, 
                                              const std::vector<char>& movable, double target_degrees, double longest_edge,
                                              int passes)
 {
-  typedef Epick::Point_3 Point_3;
-  typedef Epick::Vector_3 Vector_3;
-  typedef std::pair<Point_3, Poly_annulus_segmentation::Face> Located;
-  std::vector<std::vector<std::pair<std::size_t, std::size_t> > > star(points.size()); // the other corners, in order
-  for(const auto& t : triangles)
-    for(int k = 0; k < 3; ++k)
-      if(movable[t[k]])
-        star[t[k]].emplace_back(t[(k + 1) % 3], t[(k + 2) % 3]);
-  const double cos_target = std::cos(target_degrees * CGAL_PI / 180.), cos_turn = std::cos(30. * CGAL_PI / 180.);
-  const double longest_squared = longest_edge * longest_edge;
+  const std::vector<std::vector<std::pair<std::size_t, std::size_t> > > star = movable_stars(triangles, movable, points.size());
+  const Move_bounds bounds{std::cos(target_degrees * CGAL_PI / 180.), std::cos(30. * CGAL_PI / 180.), longest_edge * longest_edge};
   std::vector<Poly_annulus_segmentation::Face> visited;
-  const std::vector<Point_3> original = points;
-
-  // The star of v with v at x: its summed skewness, the cosine of its smallest angle and its
-  // triangles below the target, and whether x keeps the bounds (`limit`: the largest cosine of a
-  // smallest angle allowed).
-  struct Star_at
-  {
-    bool allowed = true;
-    double skewness = 0., worst_cosine = -1.;
-    int below = 0;
-  };
-  std::vector<Vector_3> normals;
-  double mean_edge = 0.;
-  auto star_at = [&](std::size_t v, const Point_3& x, double limit) {
-    Star_at result;
-    double cut_off = std::numeric_limits<double>::infinity();
-    for(std::size_t i = 0; i < star[v].size(); ++i)
-    {
-      const Point_3 &q = points[star[v][i].first], &r = points[star[v][i].second];
-      const double c = Triangle_shape::min_angle_cosine(x, q, r);
-      if(!(Triangle_shape::unit_normal(x, q, r) * normals[i] >= cos_turn) || c > limit
-         || CGAL::squared_distance(x, q) > (std::max)(longest_squared, CGAL::squared_distance(points[v], q)))
-        result.allowed = false;
-      result.skewness += Triangle_shape::skewness(x, q, r);
-      result.worst_cosine = (std::max)(result.worst_cosine, c);
-      result.below += c > cos_target;
-      // The star must not cut the surface off where the point was first (a turn of a cut at an
-      // input vertex is often a crease): the distance from there to the moved star is bounded.
-      cut_off = (std::min)(cut_off, CGAL::squared_distance(original[v], Epick::Triangle_3(x, q, r)));
-    }
-    if(cut_off > CGAL::square(largest_cut_off * mean_edge))
-      result.allowed = false;
-    return result;
-  };
-  // Looks for a better place for v: `better(x)` says whether v's star with v at the surface point
-  // x is better than at the best place so far, and if so makes x the best; a step toward the
-  // star's centroid first, when `to_centroid` is given, then a compass search in the tangent
-  // plane around where that ended. Returns the best place, v's own if none was better.
-  auto search = [&](std::size_t v, const Vector_3* to_centroid, const Vector_3& normal, const auto& better) {
-    const Point_3 p = points[v];
-    Located best(p, point_face[v]), located;
-    auto try_step = [&](const Vector_3& step) {
-      located = closest_point_nearby(s, point_face[v], p + step, 2. * std::sqrt(step.squared_length()) + 1e-3 * mean_edge, visited);
-      if(!better(located.first))
-        return false;
-      best = located;
-      return true;
-    };
-    if(to_centroid != nullptr)
-      for(double t : {1., 0.5, 0.25})
-        if(try_step(t * *to_centroid))
-          break;
-    const Vector_3 n = normal / std::sqrt(normal.squared_length());
-    Vector_3 e1 = CGAL::cross_product(n, std::abs(n.x()) < 0.6 ? Vector_3(1., 0., 0.) : Vector_3(0., 1., 0.));
-    e1 = e1 / std::sqrt(e1.squared_length());
-    const Vector_3 e2 = CGAL::cross_product(n, e1);
-    for(double length = 0.1 * mean_edge; length >= 0.1 * mean_edge / 4.; length *= 0.5)
-      for(const Vector_3& d : {e1, e2, -e1, -e2})
-        try_step((best.first - p) + length * d);
-    return best;
-  };
+  const std::vector<Epick::Point_3> original = points;
+  std::vector<Epick::Vector_3> normals; // of the star of the point being moved
 
   std::size_t moves = 0;
   for(int stage = 0; stage < 2; ++stage)
@@ -205,59 +304,8 @@ inline std::size_t move_points_after_gluing(const Poly_annulus_segmentation& s, 
         const auto& ring = star[v];
         if(!movable[v] || ring.empty())
           continue;
-        const Point_3 p = points[v];
-        double edge_sum = 0., weight = 0.;
-        Vector_3 centroid = CGAL::NULL_VECTOR, normal = CGAL::NULL_VECTOR;
-        normals.clear();
-        for(const auto& qr : ring)
-        {
-          const Point_3 &q = points[qr.first], &r = points[qr.second];
-          edge_sum += std::sqrt(CGAL::squared_distance(p, q));
-          const Vector_3 n = CGAL::cross_product(q - p, r - p);
-          const double area = std::sqrt(n.squared_length());
-          weight += area;
-          centroid = centroid + area * ((p - CGAL::ORIGIN) + (q - CGAL::ORIGIN) + (r - CGAL::ORIGIN)) / 3.;
-          normal = normal + n;
-          normals.push_back(Triangle_shape::unit_normal(p, q, r));
-        }
-        if(!(weight > 0.) || !(normal.squared_length() > 0.))
-          continue;
-        mean_edge = edge_sum / double(ring.size());
-        const Star_at now = star_at(v, p, std::numeric_limits<double>::infinity());
-        Located best;
-        if(!raise_angles)
-        {
-          const double limit = (std::max)(cos_target, now.worst_cosine);
-          double best_energy = now.skewness;
-          const Vector_3 to_centroid = (CGAL::ORIGIN + centroid / weight) - p;
-          best = search(v, &to_centroid, normal, [&](const Point_3& x) {
-            const Star_at at = star_at(v, x, limit);
-            if(!at.allowed || !(at.skewness < best_energy))
-              return false;
-            best_energy = at.skewness;
-            return true;
-          });
-          if(!(best_energy < now.skewness - 1e-6))
-            continue;
-        }
-        else
-        {
-          if(!(now.worst_cosine > cos_target))
-            continue;
-          double best_worst = now.worst_cosine;
-          best = search(v, nullptr, normal, [&](const Point_3& x) {
-            const Star_at at = star_at(v, x, best_worst);
-            if(!at.allowed || !(at.worst_cosine < best_worst) || at.below > now.below)
-              return false;
-            best_worst = at.worst_cosine;
-            return true;
-          });
-          if(!(best_worst < now.worst_cosine - 1e-9))
-            continue;
-        }
-        points[v] = best.first;
-        point_face[v] = best.second;
-        ++moves;
+        if(move_point_after_gluing(s, points, point_face, original, ring, v, raise_angles, bounds, normals, visited))
+          ++moves;
       }
       if(moves == moves_before)
         break;

@@ -7,7 +7,8 @@
 #ifndef CGAL_CONFORMAL_REMESHING_INTERNAL_REMESHING_PLANAR_MESHER_H
 #define CGAL_CONFORMAL_REMESHING_INTERNAL_REMESHING_PLANAR_MESHER_H
 
-#include <CGAL/Conformal_remeshing/conformal_flatten.h>
+#include <CGAL/Conformal_remeshing/Error.h>
+#include <CGAL/Conformal_remeshing/internal/remeshing/boundary_sample.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/frontal_insertion.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/planar_point_map.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/triangle_adjacency.h>
@@ -17,6 +18,7 @@
 #include <CGAL/Delaunay_mesh_size_criteria_2.h>
 #include <CGAL/Delaunay_mesh_vertex_base_2.h>
 #include <CGAL/Delaunay_mesher_2.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Mesh_2/Do_not_refine_edges.h>
 #include <CGAL/Mesh_2/Refine_edges.h>
 #include <CGAL/Mesh_2/Refine_faces.h>
@@ -24,12 +26,15 @@
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 #include <CGAL/lloyd_optimize_mesh_2.h>
 
+#include <algorithm>
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <cstring>
 #include <functional>
+#include <iterator>
 #include <map>
 #include <memory>
 #include <set>
@@ -41,73 +46,6 @@ namespace CGAL {
 namespace Conformal_remeshing {
 namespace internal {
 namespace remeshing {
-
-/// A boundary sample: its planar position and the surface point it stands for.
-struct Boundary_sample
-{
-  Epick::Point_2 uv;
-  Epick::Point_3 point;
-  /// the surface sample this is an image of: the two sides of a slit have two images of one
-  /// sample, which no vertex may join both (see `mesh_planar_domain()`); `none`: its own point
-  std::size_t id = none;
-  static constexpr std::size_t none = std::size_t(-1);
-};
-
-/// Resamples a closed boundary loop along its 3D polyline with spacing close to `spacing`,
-/// keeping every vertex where the polyline turns by more than `corner_degrees`. Each sample
-/// lies on an edge of the input polyline, and its uv on the corresponding planar segment (a
-/// boundary edge maps affinely onto its planar image).
-inline std::vector<Boundary_sample> resample_loop(const std::vector<Domain_point>& loop, double spacing, double corner_degrees)
-{
-  const std::size_t n = loop.size();
-  auto length = [&](std::size_t i) { return std::sqrt(CGAL::squared_distance(loop[i].point, loop[(i + 1) % n].point)); };
-  std::vector<std::size_t> corners;
-  for(std::size_t i = 0; i < n; ++i)
-  {
-    const Epick::Vector_3 in = loop[i].point - loop[(i + n - 1) % n].point, out = loop[(i + 1) % n].point - loop[i].point;
-    const double c = (in * out) / std::sqrt(in.squared_length() * out.squared_length());
-    if(std::acos((std::max)(-1., (std::min)(1., c))) * 180. / CGAL_PI > corner_degrees)
-      corners.push_back(i);
-  }
-  double perimeter = 0.;
-  for(std::size_t i = 0; i < n; ++i)
-    perimeter += length(i);
-  // A loop needs three samples at least; without corners it is cut into three equal arcs.
-  if(corners.size() < 3 && perimeter < 3. * spacing)
-    spacing = perimeter / 3.;
-  if(corners.empty())
-    corners.push_back(0);
-
-  std::vector<Boundary_sample> samples;
-  for(std::size_t k = 0; k < corners.size(); ++k)
-  {
-    const std::size_t first = corners[k], last = corners[(k + 1) % corners.size()];
-    const std::size_t count = (last > first) ? last - first : last + n - first; // edges of this arc
-    double arc = 0.;
-    for(std::size_t e = 0; e < count; ++e)
-      arc += length((first + e) % n);
-    const std::size_t pieces = (std::max<std::size_t>)(corners.size() == 1 ? 3 : 1, std::size_t(std::round(arc / spacing)));
-    const double step = arc / double(pieces);
-    samples.push_back(Boundary_sample{loop[first].uv, loop[first].point});
-    // Walk along the arc and drop a sample every `step`.
-    std::size_t e = 0;
-    double done = 0.; // arc length before edge e
-    for(std::size_t s = 1; s < pieces; ++s)
-    {
-      const double at = step * double(s);
-      while(done + length((first + e) % n) < at && e + 1 < count)
-        done += length((first + e++) % n);
-      const std::size_t i = (first + e) % n, j = (i + 1) % n;
-      const double t = (std::min)(1., (at - done) / length(i));
-      samples.push_back(Boundary_sample{
-        Epick::Point_2(loop[i].uv.x() + t * (loop[j].uv.x() - loop[i].uv.x()), loop[i].uv.y() + t * (loop[j].uv.y() - loop[i].uv.y())),
-        Epick::Point_3(loop[i].point.x() + t * (loop[j].point.x() - loop[i].point.x()),
-                       loop[i].point.y() + t * (loop[j].point.y() - loop[i].point.y()),
-                       loop[i].point.z() + t * (loop[j].point.z() - loop[i].point.z()))});
-    }
-  }
-  return samples;
-}
 
 /// Mesh_2 criteria: CGAL's shape bound, and a size bound given by a size field on the plane:
 /// a triangle is too big when its longest edge exceeds the field at its centroid, or when an
@@ -889,6 +827,250 @@ void separate_images_of_one_sample(CDT& cdt, const std::vector<std::vector<Bound
   }
 }
 
+// The vertex of `cdt` at `p`, or a null handle if `p` is no vertex.
+template <typename CDT>
+typename CDT::Vertex_handle planar_vertex_at(const CDT& cdt, const typename CDT::Point& p)
+{
+  typename CDT::Locate_type type;
+  int i = 0;
+  const typename CDT::Face_handle f = cdt.locate(p, type, i);
+  return type == CDT::VERTEX ? f->vertex(i) : typename CDT::Vertex_handle();
+}
+
+// Splits the edges of the domain of `cdt` that join the samples of a pair in `diagonals_to_split`
+// (positions in `sample_points`, the samples in loop order) and are no constraint, at their
+// midpoints. The midpoint of an edge lies inside the circumcircle of both its triangles: the edge
+// goes. Returns whether it inserted a point.
+template <typename CDT>
+bool split_sample_diagonals(CDT& cdt, const std::vector<std::pair<std::size_t, std::size_t> >& diagonals_to_split,
+                            const std::vector<typename CDT::Point>& sample_points)
+{
+  typedef typename CDT::Vertex_handle Vertex_handle;
+  std::vector<typename CDT::Point> midpoints;
+  for(const auto& pair : diagonals_to_split)
+  {
+    const Vertex_handle a = planar_vertex_at(cdt, sample_points.at(pair.first)), b = planar_vertex_at(cdt, sample_points.at(pair.second));
+    typename CDT::Face_handle f;
+    int i = 0;
+    if(a != Vertex_handle() && b != Vertex_handle() && cdt.is_edge(a, b, f, i) && !cdt.is_constrained(std::make_pair(f, i))
+       && f->is_in_domain())
+      midpoints.push_back(CGAL::midpoint(a->point(), b->point()));
+  }
+  cdt.insert(midpoints.begin(), midpoints.end());
+  return !midpoints.empty();
+}
+
+// A refinement of `mesh_planar_domain()`: the domain of `cdt` marked, the diagonals to split split
+// (see `split_sample_diagonals()`), the frontal insertion when it is on, then CGAL's Delaunay
+// refinement, which may split the loops' chords when `split_boundary` is on, else
+// `Fixed_boundary_mesher_2`, which may not.
+template <typename CDT, typename Criteria, typename Size_field>
+void refine_planar_domain(CDT& cdt, const Criteria& criteria, const Size_field& size, bool split_boundary,
+                          const Frontal_insertion& frontal,
+                          const std::vector<std::pair<std::size_t, std::size_t> >& diagonals_to_split,
+                          const std::vector<typename CDT::Point>& sample_points)
+{
+  mark_domain(cdt);
+  if(split_sample_diagonals(cdt, diagonals_to_split, sample_points))
+    mark_domain(cdt);
+  if(frontal.is_on())
+  {
+    Frontal_inserter_2<CDT, Size_field, Fixed_boundary_conforming<CDT> > inserter(cdt, size, frontal);
+    inserter.run();
+  }
+  if(split_boundary)
+  {
+    CGAL::Delaunay_mesher_2<CDT, Criteria> mesher(cdt, criteria);
+    mesher.init(true);
+    mesher.refine_mesh();
+  }
+  else
+  {
+    Fixed_boundary_mesher_2<CDT, Criteria> mesher(cdt, criteria);
+    mesher.refine_mesh();
+  }
+}
+
+// Inserts the samples of each of the `loops` into `cdt`, with the loop's chords as constraints.
+template <typename CDT>
+void insert_boundary_loops(CDT& cdt, const std::vector<std::vector<Boundary_sample> >& loops)
+{
+  typedef typename CDT::Point Point;
+  for(const auto& loop : loops)
+  {
+    std::vector<typename CDT::Vertex_handle> handles;
+    for(const Boundary_sample& s : loop)
+      handles.push_back(cdt.insert(Point(s.uv.x(), s.uv.y())));
+    for(std::size_t i = 0; i < handles.size(); ++i)
+      cdt.insert_constraint(handles[i], handles[(i + 1) % handles.size()]);
+  }
+}
+
+// Inserts the `seeds` inside the domain of `cdt` (its loops and fixed points inserted), in order,
+// each unless a vertex is closer than its clearance, and adds those inserted to `fixed`.
+template <typename CDT>
+void insert_planar_seeds(CDT& cdt, const std::vector<Planar_seed>& seeds, std::set<typename CDT::Point>& fixed)
+{
+  typedef typename CDT::Face_handle Face_handle;
+  typedef typename CDT::Point Point;
+  if(seeds.empty())
+    return;
+  mark_domain(cdt);
+  std::vector<Planar_seed> inside;
+  for(const Planar_seed& seed : seeds)
+  {
+    typename CDT::Locate_type type;
+    int i = 0;
+    const Face_handle f = cdt.locate(Point(seed.point.x(), seed.point.y()), type, i);
+    if(type == CDT::FACE && f->is_in_domain())
+      inside.push_back(seed);
+  }
+  // Each seed is checked against the vertices of the face it falls in and their neighbours:
+  // the seeds before it, the samples and the fixed points. (Located again: the domain marks
+  // hold for the faces before the first seed's insertion only.)
+  for(const Planar_seed& seed : inside)
+  {
+    const Point p(seed.point.x(), seed.point.y());
+    const Face_handle f = cdt.locate(p);
+    bool clear = true;
+    for(int c = 0; c < 3 && clear; ++c)
+    {
+      auto n = cdt.incident_vertices(f->vertex(c)), done = n;
+      do
+        clear = cdt.is_infinite(n) || !(CGAL::squared_distance(n->point(), p) < CGAL::square(seed.clearance));
+      while(clear && ++n != done);
+    }
+    if(clear)
+      fixed.insert(cdt.insert(p, f)->point());
+  }
+}
+
+// One pass of the Laplacian smoothing of `mesh_planar_domain()`: each vertex of `cdt` without a
+// constraint and not in `fixed` moves to the mean of its neighbours in the surface's metric (the
+// plane scaled by `size`) when its star stays positively oriented; the points are triangulated
+// again with the same constraints, refined by `refine(t)`, and the result replaces `cdt`.
+template <typename CDT, typename Criteria, typename Size_field, typename Refine>
+void laplacian_smooth(CDT& cdt, const std::set<typename CDT::Point>& fixed, const Criteria& criteria, const Size_field& size,
+                      const Refine& refine)
+{
+  typedef typename CDT::Point Point;
+  std::vector<std::pair<Point, Point> > constraints;
+  for(auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e)
+    if(cdt.is_constrained(*e))
+      constraints.emplace_back(e->first->vertex(CDT::cw(e->second))->point(), e->first->vertex(CDT::ccw(e->second))->point());
+  std::vector<Point> free_points;
+  for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+  {
+    if(cdt.are_there_incident_constraints(v))
+      continue;
+    if(fixed.count(v->point()))
+    {
+      free_points.push_back(v->point());
+      continue;
+    }
+    // The mean of the neighbours in the surface's metric: the plane is scaled by the size field,
+    // so each neighbour weighs 1 / size^2 at the edge's midpoint.
+    // The field's searches start where the refinement found the vertex: the vertices come in
+    // the order the refinement made them, worst face first, far from the last one.
+    double x = 0., y = 0., n = 0.;
+    const double vx = CGAL::to_double(v->point().x()), vy = CGAL::to_double(v->point().y());
+    Size_field_hint near = criteria.hint_at(Epick::Point_2(vx, vy));
+    auto c = cdt.incident_vertices(v), done = c;
+    do
+      if(!cdt.is_infinite(c))
+      {
+        const double cx = CGAL::to_double(c->point().x()), cy = CGAL::to_double(c->point().y());
+        const double local = size_field_at(size, Epick::Point_2(0.5 * (vx + cx), 0.5 * (vy + cy)), near);
+        const double w = 1. / (local * local);
+        x += w * cx;
+        y += w * cy;
+        n += w;
+      }
+    while(++c != done);
+    const Point moved(x / n, y / n);
+    bool star_stays_positive = true;
+    auto f = cdt.incident_faces(v), first = f;
+    do
+    {
+      const int i = f->index(v);
+      star_stays_positive = star_stays_positive && !cdt.is_infinite(f)
+                            && CGAL::orientation(moved, f->vertex(CDT::ccw(i))->point(), f->vertex(CDT::cw(i))->point()) == CGAL::POSITIVE;
+    }
+    while(++f != first);
+    free_points.push_back(star_stays_positive ? moved : v->point());
+  }
+  CDT smoothed;
+  for(const auto& c : constraints)
+    smoothed.insert_constraint(c.first, c.second);
+  smoothed.insert(free_points.begin(), free_points.end());
+  refine(smoothed);
+  cdt.swap(smoothed);
+}
+
+// The output of `mesh_planar_domain()` from its last triangulation `cdt`: where a vertex joins two
+// images of one sample, the edge to one of them split first (see
+// `separate_images_of_one_sample()`); then the boundary samples in loop order, the
+// `fixed_points` in their order and the other vertices, and the faces of the domain. Throws
+// `Error` if a sample or a fixed point is no vertex. The vertices' info is overwritten.
+template <typename CDT>
+Planar_mesh planar_mesh_of_refinement(CDT& cdt, const std::vector<std::vector<Boundary_sample> >& loops,
+                                      const std::vector<Epick::Point_2>& fixed_points)
+{
+  typedef typename CDT::Vertex_handle Vertex_handle;
+  typedef typename CDT::Face_handle Face_handle;
+  typedef typename CDT::Point Point;
+  // The samples and the fixed points are found by their coordinates in one table of the vertices:
+  // a location in the triangulation walks from the same face each time, across hundreds of faces.
+  const auto to_epick = [](const Point& p) { return Epick::Point_2(CGAL::to_double(p.x()), CGAL::to_double(p.y())); };
+  Planar_point_map<Vertex_handle> vertex_of;
+  vertex_of.reserve(cdt.number_of_vertices());
+  for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+    vertex_of.try_emplace(to_epick(v->point()), v);
+  // (Two points of an exact kernel may round to one pair of doubles: then the triangulation's.)
+  const auto final_vertex_at = [&](const CDT& t, const Point& p) {
+    const Vertex_handle* v = vertex_of.find(to_epick(p));
+    return v != nullptr && (*v)->point() == p ? *v : planar_vertex_at(t, p);
+  };
+  separate_images_of_one_sample(cdt, loops, final_vertex_at); // inserts points, moves none
+  mark_domain(cdt);
+
+  // Output: the boundary samples first, in loop order, then the other vertices.
+  Planar_mesh result;
+  for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+    v->info() = -1;
+  const auto number = [&result](Vertex_handle v) {
+    if(v->info() >= 0)
+      return false;
+    v->info() = int(result.points.size());
+    return true;
+  };
+  for(const auto& loop : loops)
+    for(const Boundary_sample& s : loop)
+    {
+      const Vertex_handle v = final_vertex_at(cdt, Point(s.uv.x(), s.uv.y()));
+      if(v == Vertex_handle())
+        throw Error(Error_code::INVALID_INPUT, "planar meshing lost a boundary sample (internal error)");
+      if(number(v))
+        result.points.push_back(s.uv);
+    }
+  result.number_of_samples = result.points.size();
+  for(const Epick::Point_2& p : fixed_points)
+  {
+    const Vertex_handle v = final_vertex_at(cdt, Point(p.x(), p.y()));
+    if(v == Vertex_handle() || !number(v))
+      throw Error(Error_code::INVALID_INPUT, "planar meshing lost a fixed point (internal error)");
+    result.points.push_back(p);
+  }
+  result.number_of_fixed_points = result.points.size();
+  for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
+    if(number(v))
+      result.points.push_back(to_epick(v->point()));
+  for(Face_handle f : cdt.finite_face_handles())
+    if(f->is_in_domain())
+      result.triangles.push_back({{f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()}});
+  return result;
+}
+
 /// Meshes the domain bounded by `loops` (outer loop first) with CGAL's constrained Delaunay
 /// refinement over `Kernel`: a minimum angle of `min_angle_degrees` (up to the refinement's
 /// guarantees near small input angles) and a longest edge below `size(p)` at each triangle's
@@ -922,8 +1104,6 @@ Planar_mesh mesh_planar_domain(const std::vector<std::vector<Boundary_sample> >&
                                const std::vector<Planar_seed>& seeds = {}, const Frontal_insertion& frontal = {})
 {
   typedef typename Planar_triangulation<Kernel>::type CDT;
-  typedef typename CDT::Vertex_handle Vertex_handle;
-  typedef typename CDT::Face_handle Face_handle;
   typedef typename Kernel::Point_2 Point;
   typedef Size_field_criteria_2<CDT, Size_field> Criteria;
   const double sine = std::sin(min_angle_degrees * CGAL_PI / 180.);
@@ -932,155 +1112,27 @@ Planar_mesh mesh_planar_domain(const std::vector<std::vector<Boundary_sample> >&
   for(const auto& loop : loops)
     for(const Boundary_sample& s : loop)
       sample_points.push_back(Point(s.uv.x(), s.uv.y()));
-  auto vertex_at = [](const CDT& cdt, const Point& p) {
-    typename CDT::Locate_type type;
-    int i = 0;
-    const Face_handle f = cdt.locate(p, type, i);
-    return type == CDT::VERTEX ? f->vertex(i) : Vertex_handle();
-  };
-  // The midpoint of an edge lies inside the circumcircle of both its triangles: the edge goes.
-  auto split_diagonals = [&](CDT& cdt) {
-    std::vector<Point> midpoints;
-    for(const auto& pair : diagonals_to_split)
-    {
-      const Vertex_handle a = vertex_at(cdt, sample_points.at(pair.first)), b = vertex_at(cdt, sample_points.at(pair.second));
-      Face_handle f;
-      int i = 0;
-      if(a != Vertex_handle() && b != Vertex_handle() && cdt.is_edge(a, b, f, i) && !cdt.is_constrained(std::make_pair(f, i))
-         && f->is_in_domain())
-        midpoints.push_back(CGAL::midpoint(a->point(), b->point()));
-    }
-    cdt.insert(midpoints.begin(), midpoints.end());
-    return !midpoints.empty();
-  };
 
   // One criteria object for every refinement: the field at the corners it remembers still holds
   // after the smoothing, at the points the smoothing did not move.
   const Criteria criteria(sine * sine, size);
-  auto refine = [&](CDT& cdt) {
-    mark_domain(cdt);
-    if(split_diagonals(cdt))
-      mark_domain(cdt);
-    if(frontal.is_on())
-    {
-      Frontal_inserter_2<CDT, Size_field, Fixed_boundary_conforming<CDT> > inserter(cdt, size, frontal);
-      inserter.run();
-    }
-    if(split_boundary)
-    {
-      CGAL::Delaunay_mesher_2<CDT, Criteria> mesher(cdt, criteria);
-      mesher.init(true);
-      mesher.refine_mesh();
-    }
-    else
-    {
-      Fixed_boundary_mesher_2<CDT, Criteria> mesher(cdt, criteria);
-      mesher.refine_mesh();
-    }
+  const auto refine = [&](CDT& t) {
+    refine_planar_domain(t, criteria, size, split_boundary, frontal, diagonals_to_split, sample_points);
   };
 
   CDT cdt;
-  for(const auto& loop : loops)
-  {
-    std::vector<Vertex_handle> handles;
-    for(const Boundary_sample& s : loop)
-      handles.push_back(cdt.insert(Point(s.uv.x(), s.uv.y())));
-    for(std::size_t i = 0; i < handles.size(); ++i)
-      cdt.insert_constraint(handles[i], handles[(i + 1) % handles.size()]);
-  }
+  insert_boundary_loops(cdt, loops);
   std::set<Point> fixed;
   for(const Epick::Point_2& p : fixed_points)
     fixed.insert(cdt.insert(Point(p.x(), p.y()))->point());
-  if(!seeds.empty())
-  {
-    mark_domain(cdt);
-    std::vector<Planar_seed> inside;
-    for(const Planar_seed& seed : seeds)
-    {
-      typename CDT::Locate_type type;
-      int i = 0;
-      const Face_handle f = cdt.locate(Point(seed.point.x(), seed.point.y()), type, i);
-      if(type == CDT::FACE && f->is_in_domain())
-        inside.push_back(seed);
-    }
-    // Each seed is checked against the vertices of the face it falls in and their neighbours:
-    // the seeds before it, the samples and the fixed points. (Located again: the domain marks
-    // hold for the faces before the first seed's insertion only.)
-    for(const Planar_seed& seed : inside)
-    {
-      const Point p(seed.point.x(), seed.point.y());
-      const Face_handle f = cdt.locate(p);
-      bool clear = true;
-      for(int c = 0; c < 3 && clear; ++c)
-      {
-        auto n = cdt.incident_vertices(f->vertex(c)), done = n;
-        do
-          clear = cdt.is_infinite(n) || !(CGAL::squared_distance(n->point(), p) < CGAL::square(seed.clearance));
-        while(clear && ++n != done);
-      }
-      if(clear)
-        fixed.insert(cdt.insert(p, f)->point());
-    }
-  }
+  insert_planar_seeds(cdt, seeds, fixed);
   typedef std::chrono::steady_clock Clock;
   const Clock::time_point refinement_start = Clock::now();
   refine(cdt);
   const Clock::time_point smoothing_start = Clock::now();
 
   for(int iteration = 0; iteration < smoothing.laplacian_iterations; ++iteration)
-  {
-    std::vector<std::pair<Point, Point> > constraints;
-    for(auto e = cdt.finite_edges_begin(); e != cdt.finite_edges_end(); ++e)
-      if(cdt.is_constrained(*e))
-        constraints.emplace_back(e->first->vertex(CDT::cw(e->second))->point(), e->first->vertex(CDT::ccw(e->second))->point());
-    std::vector<Point> free_points;
-    for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
-    {
-      if(cdt.are_there_incident_constraints(v))
-        continue;
-      if(fixed.count(v->point()))
-      {
-        free_points.push_back(v->point());
-        continue;
-      }
-      // The mean of the neighbours in the surface's metric: the plane is scaled by the size field,
-      // so each neighbour weighs 1 / size^2 at the edge's midpoint.
-      // The field's searches start where the refinement found the vertex: the vertices come in
-      // the order the refinement made them, worst face first, far from the last one.
-      double x = 0., y = 0., n = 0.;
-      const double vx = CGAL::to_double(v->point().x()), vy = CGAL::to_double(v->point().y());
-      Size_field_hint near = criteria.hint_at(Epick::Point_2(vx, vy));
-      auto c = cdt.incident_vertices(v), done = c;
-      do
-        if(!cdt.is_infinite(c))
-        {
-          const double cx = CGAL::to_double(c->point().x()), cy = CGAL::to_double(c->point().y());
-          const double local = size_field_at(size, Epick::Point_2(0.5 * (vx + cx), 0.5 * (vy + cy)), near);
-          const double w = 1. / (local * local);
-          x += w * cx;
-          y += w * cy;
-          n += w;
-        }
-      while(++c != done);
-      const Point moved(x / n, y / n);
-      bool star_stays_positive = true;
-      auto f = cdt.incident_faces(v), first = f;
-      do
-      {
-        const int i = f->index(v);
-        star_stays_positive = star_stays_positive && !cdt.is_infinite(f)
-                              && CGAL::orientation(moved, f->vertex(CDT::ccw(i))->point(), f->vertex(CDT::cw(i))->point()) == CGAL::POSITIVE;
-      }
-      while(++f != first);
-      free_points.push_back(star_stays_positive ? moved : v->point());
-    }
-    CDT smoothed;
-    for(const auto& c : constraints)
-      smoothed.insert_constraint(c.first, c.second);
-    smoothed.insert(free_points.begin(), free_points.end());
-    refine(smoothed);
-    cdt.swap(smoothed);
-  }
+    laplacian_smooth(cdt, fixed, criteria, size, refine);
   if(smoothing.lloyd_iterations > 0)
   {
     lloyd_smooth(cdt, smoothing, fixed);
@@ -1088,57 +1140,9 @@ Planar_mesh mesh_planar_domain(const std::vector<std::vector<Boundary_sample> >&
   }
   const Clock::time_point smoothing_end = Clock::now();
 
-  // The samples and the fixed points are found by their coordinates in one table of the vertices:
-  // a location in the triangulation walks from the same face each time, across hundreds of faces.
-  const auto to_epick = [](const Point& p) { return Epick::Point_2(CGAL::to_double(p.x()), CGAL::to_double(p.y())); };
-  Planar_point_map<Vertex_handle> vertex_of;
-  vertex_of.reserve(cdt.number_of_vertices());
-  for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
-    vertex_of.try_emplace(to_epick(v->point()), v);
-  // (Two points of an exact kernel may round to one pair of doubles: then the triangulation's.)
-  const auto final_vertex_at = [&](const CDT& t, const Point& p) {
-    const Vertex_handle* v = vertex_of.find(to_epick(p));
-    return v != nullptr && (*v)->point() == p ? *v : vertex_at(t, p);
-  };
-  separate_images_of_one_sample(cdt, loops, final_vertex_at); // inserts points, moves none
-  mark_domain(cdt);
-
-  // Output: the boundary samples first, in loop order, then the other vertices.
-  Planar_mesh result;
+  Planar_mesh result = planar_mesh_of_refinement(cdt, loops, fixed_points);
   result.seconds_refinement = std::chrono::duration<double>(smoothing_start - refinement_start).count();
   result.seconds_smoothing = std::chrono::duration<double>(smoothing_end - smoothing_start).count();
-  for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
-    v->info() = -1;
-  const auto number = [&result](Vertex_handle v) {
-    if(v->info() >= 0)
-      return false;
-    v->info() = int(result.points.size());
-    return true;
-  };
-  for(const auto& loop : loops)
-    for(const Boundary_sample& s : loop)
-    {
-      const Vertex_handle v = final_vertex_at(cdt, Point(s.uv.x(), s.uv.y()));
-      if(v == Vertex_handle())
-        throw Error(Error_code::INVALID_INPUT, "planar meshing lost a boundary sample (internal error)");
-      if(number(v))
-        result.points.push_back(s.uv);
-    }
-  result.number_of_samples = result.points.size();
-  for(const Epick::Point_2& p : fixed_points)
-  {
-    const Vertex_handle v = final_vertex_at(cdt, Point(p.x(), p.y()));
-    if(v == Vertex_handle() || !number(v))
-      throw Error(Error_code::INVALID_INPUT, "planar meshing lost a fixed point (internal error)");
-    result.points.push_back(p);
-  }
-  result.number_of_fixed_points = result.points.size();
-  for(auto v = cdt.finite_vertices_begin(); v != cdt.finite_vertices_end(); ++v)
-    if(number(v))
-      result.points.push_back(to_epick(v->point()));
-  for(Face_handle f : cdt.finite_face_handles())
-    if(f->is_in_domain())
-      result.triangles.push_back({{f->vertex(0)->info(), f->vertex(1)->info(), f->vertex(2)->info()}});
   return result;
 }
 
