@@ -403,6 +403,428 @@ inline bool split_long_patch_edges(Intrinsic_triangulation<double>& tri, std::si
   }
 }
 
+namespace flattening {
+
+// The state the steps of `conformal_flatten()` share, besides the result they fill.
+struct Flattening_state
+{
+  // a planar patch (a CAD face), laid out isometrically with no welding, no flow and no split
+  bool planar = false;
+  // the boundary loop welded to the annulus (the outer boundary of the domain)
+  std::size_t welded = 0;
+  // `maximum_edge_length`, 0 for no splitting
+  double maximum_length = 0.;
+  // the welded disc (or, for a planar patch, the patch alone)
+  welding::Welded_disc disc;
+  // the flips of the refinement before the flow (part of `Flattening_report::flips`)
+  std::size_t refinement_flips = 0;
+  Ricci_flow_result<double> flow;
+  // the faces of the final triangulation in the patch region
+  std::vector<char> in_patch;
+  // the boundary loops of the patch region, the outer one first
+  std::vector<std::vector<int> > loops;
+};
+
+// The input must be a patch: valid, connected, genus 0, with a boundary.
+template <typename TriangleMesh, typename NamedParameters>
+Mesh_check_report check_patch(const TriangleMesh& mesh, const NamedParameters& np)
+{
+  Mesh_check_report checks = check_mesh(mesh, np);
+  // Two vertices at one place are fine here: a patch cut from a surface may touch itself at a
+  // vertex, which its mesh has twice. Every other defect is not.
+  if(checks.defects.size() > std::size_t(checks.count(Mesh_defect::DUPLICATED_VERTEX) > 0))
+    throw Error(Error_code::INVALID_INPUT, "conformal_flatten: invalid input mesh: " + checks.summary());
+  if(checks.components.size() != 1)
+    throw Error(Error_code::INVALID_INPUT, "conformal_flatten: the mesh has " + std::to_string(checks.components.size())
+                                             + " connected components; a patch has one");
+  if(checks.components[0].genus != 0)
+    throw Error(Error_code::INVALID_INPUT, "conformal_flatten: the mesh has genus " + std::to_string(checks.components[0].genus)
+                                             + "; a patch must have genus 0 (cut its handles first)");
+  if(checks.components[0].boundary_loops == 0)
+    throw Error(Error_code::INVALID_INPUT, "conformal_flatten: the mesh is closed; a patch needs at least one boundary loop");
+  return checks;
+}
+
+// The inner radius of the annulus, in (0, 1), the outer radius being 1.
+template <typename NamedParameters>
+double checked_inner_radius(const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  const double inner_radius = choose_parameter(get_parameter(np, internal_np::annulus_inner_radius), 0.3);
+  if(!(inner_radius > 0. && inner_radius < 1.))
+    throw Error(Error_code::INVALID_INPUT, "conformal_flatten: the annulus inner radius must be in (0, 1)");
+  return inner_radius;
+}
+
+// Valid coordinates can still be out of range for the lengths and areas the flow computes
+// (their squares overflow or underflow): say so rather than fail on a zero length later.
+inline void check_edge_length_range(const welding::Indexed_patch& patch)
+{
+  for(const auto& f : patch.faces)
+    for(int c = 0; c < 3; ++c)
+    {
+      const double length = internal::welding::distance(patch.points[f[c]], patch.points[f[(c + 1) % 3]]);
+      if(!(length >= 1e-125 && length <= 1e125))
+      {
+        std::ostringstream os;
+        os << "conformal_flatten: an edge length of " << length
+           << " is out of the range of the flow's double precision computations (1e-125 to 1e125); scale the mesh";
+        throw Error(Error_code::INVALID_INPUT, os.str());
+      }
+    }
+}
+
+// The loop to weld: the one of the given border halfedge, or the longest.
+template <typename TriangleMesh, typename VertexIndexMap, typename NamedParameters>
+std::size_t welded_loop(const TriangleMesh& mesh, VertexIndexMap vim, const welding::Indexed_patch& patch,
+                        const NamedParameters& np)
+{
+  using CGAL::parameters::get_parameter;
+  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
+  std::size_t welded = 0;
+  const auto chosen = get_parameter(np, internal_np::welded_boundary);
+  if constexpr(!std::is_same<std::decay_t<decltype(chosen)>, CGAL::internal_np::Param_not_found>::value)
+  {
+    const halfedge_descriptor h = chosen;
+    if(!is_border(h, mesh))
+      throw Error(Error_code::INVALID_INPUT, "conformal_flatten: welded_boundary() needs a border halfedge");
+    const int v = int(get(vim, source(h, mesh)));
+    for(std::size_t l = 0; l < patch.boundary_loops.size(); ++l)
+      if(std::find(patch.boundary_loops[l].begin(), patch.boundary_loops[l].end(), v) != patch.boundary_loops[l].end())
+        welded = l;
+  }
+  else
+  {
+    for(std::size_t l = 1; l < patch.boundary_loops.size(); ++l)
+      if(patch.loop_length(patch.boundary_loops[l]) > patch.loop_length(patch.boundary_loops[welded]))
+        welded = l;
+  }
+  return welded;
+}
+
+// Before the welding of a patch that is not planar: the welded loop's long edges are split, and
+// the flat regions retriangulated.
+inline void prepare_patch(welding::Indexed_patch& patch, const Flattening_state& state, Flattening_report& report)
+{
+  const std::size_t points_before = patch.points.size();
+  patch.split_long_boundary_edges(state.welded, patch.loop_length(patch.boundary_loops[state.welded]) / 32.);
+  report.boundary_splits = patch.points.size() - points_before;
+  // (A planar patch is not flipped: its own triangles are laid out.) Grid points inside the
+  // coplanar regions at 1/1.5 of the maximum length: the diagonals of their squares are short
+  // enough not to be split.
+  report.retriangulated_faces = internal::welding::retriangulate_flat_regions(patch, state.maximum_length / 1.5);
+}
+
+// The patch faces around each patch vertex (`Conformal_flattening::faces_of_vertex`).
+inline void index_faces_of_vertices(Conformal_flattening& result)
+{
+  const welding::Indexed_patch& patch = result.patch;
+  result.faces_of_vertex_start.assign(patch.points.size() + 1, 0);
+  for(const auto& f : patch.faces)
+    for(int v : f)
+      ++result.faces_of_vertex_start[v + 1];
+  for(std::size_t v = 0; v < patch.points.size(); ++v)
+    result.faces_of_vertex_start[v + 1] += result.faces_of_vertex_start[v];
+  result.faces_of_vertex.resize(result.faces_of_vertex_start.back());
+  {
+    std::vector<int> fill(result.faces_of_vertex_start.begin(), result.faces_of_vertex_start.end() - 1);
+    for(std::size_t f = 0; f < patch.faces.size(); ++f)
+      for(int v : patch.faces[f])
+        result.faces_of_vertex[fill[v]++] = int(f);
+  }
+}
+
+// The welded disc (for a planar patch, the patch alone) and its intrinsic triangulation, whose
+// seams (welded and hole loops) are never flipped.
+inline void weld_patch(Conformal_flattening& result, Flattening_state& state, double inner_radius)
+{
+  const welding::Indexed_patch& patch = result.patch;
+  Flattening_report& report = result.report;
+  state.disc = state.planar ? internal::welding::unwelded_disc(patch)
+                            : internal::welding::weld(patch, state.welded, inner_radius, state.maximum_length / 1.5);
+  welding::Welded_disc& disc = state.disc;
+  report.flat_sides_shortened = internal::welding::open_numerically_flat_faces(disc);
+  result.welded_faces = disc.faces;
+  index_faces_of_vertices(result);
+  report.welded_vertices = disc.number_of_vertices;
+  Intrinsic_triangulation<double>& tri = result.triangulation;
+  tri = Intrinsic_triangulation<double>(disc.number_of_vertices, disc.faces, disc.lengths);
+  {
+    std::map<std::pair<int, int>, bool> seam;
+    for(const auto& e : disc.seams)
+      seam[std::minmax(e.first, e.second)] = true;
+    for(int f = 0; f < tri.number_of_faces(); ++f)
+      for(int c = 0; c < 3; ++c)
+        if(seam.count(std::minmax(tri.vertex(f, c), tri.vertex(f, (c + 1) % 3))))
+          tri.set_unflippable(tri.edge(f, c));
+  }
+}
+
+// The intrinsic Delaunay flips and the splits of `maximum_edge_length` in the patch region.
+inline void refine_patch_region(Conformal_flattening& result, Flattening_state& state)
+{
+  Intrinsic_triangulation<double>& tri = result.triangulation;
+  const welding::Welded_disc& disc = state.disc;
+  const double maximum_length = state.maximum_length;
+  const std::size_t split_limit = (std::max)(std::size_t(1000000), 20 * result.patch.points.size());
+  if(maximum_length > 0. && !state.planar &&
+     !internal::split_long_patch_edges(tri, disc.patch_faces, disc.scale * maximum_length, split_limit,
+                                       result.report.edge_splits))
+  {
+    std::ostringstream os;
+    os << "conformal_flatten: a maximum_edge_length of " << maximum_length << " needs more than " << split_limit
+       << " edge splits on this mesh; give a length closer to its edge lengths";
+    throw Error(Error_code::INVALID_INPUT, os.str());
+  }
+  state.refinement_flips = tri.number_of_flips();
+}
+
+// The flow: flat everywhere, convex free boundary. The welded disc's only boundary is the
+// annulus' inner circle. A planar patch is flat already.
+template <typename NamedParameters>
+void run_flow(Intrinsic_triangulation<double>& tri, Flattening_state& state, const Time_limit& time_limit,
+              const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  Ricci_flow_result<double>& flow = state.flow;
+  if(state.planar)
+  {
+    flow.status = Error_code::SUCCESS;
+    flow.converged = true;
+    flow.conformal_factors.assign(tri.number_of_vertices(), 0.);
+  }
+  else
+  {
+    try
+    {
+      flow = discrete_ricci_flow(
+        tri, disc_flattening_targets(tri),
+        parameters::maximum_running_time(
+          time_limit.remaining(),
+          parameters::curvature_tolerance(
+            choose_parameter(get_parameter(np, internal_np::curvature_tolerance), 1e-10),
+            CGAL::parameters::number_of_iterations(
+              choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 50)))));
+    }
+    catch(const Error& e)
+    {
+      // The flow's message counts from its own start: say it with this call's limit.
+      if(e.code() == Error_code::TIME_LIMIT_EXCEEDED)
+        time_limit.check("during the Ricci flow");
+      throw;
+    }
+  }
+}
+
+// What the flow did, in the report.
+inline void report_flow(Flattening_report& report, const Flattening_state& state)
+{
+  const Ricci_flow_result<double>& flow = state.flow;
+  report.converged = flow.converged;
+  report.iterations = flow.iterations;
+  report.curvature_error = flow.max_curvature_error;
+  report.flips = state.refinement_flips + flow.number_of_flips;
+  report.flow_message = flow.message;
+  report.seconds_flips = flow.seconds_flips;
+  report.seconds_factorization = flow.seconds_factorization;
+  report.seconds_solve = flow.seconds_solve;
+  report.seconds_line_search = flow.seconds_line_search;
+}
+
+// The region of every face of the final triangulation (`Conformal_flattening::face_region`),
+// the faces of the patch region, and the flips in the hole fills.
+inline void find_welded_regions(Conformal_flattening& result, Flattening_state& state)
+{
+  const Intrinsic_triangulation<double>& tri = result.triangulation;
+  const welding::Welded_disc& disc = state.disc;
+  typedef Intrinsic_triangulation<double>::Face_location Location;
+  std::vector<char>& in_patch = state.in_patch;
+  in_patch.assign(tri.number_of_faces(), 0);
+  result.face_region.resize(tri.number_of_faces());
+  // The regions are bounded by seams (welded and hole loops), which are never flipped, and their
+  // split halves: one walk back through the correspondence per connected set of faces across the
+  // other edges suffices (a walk per face is far slower on large CAD parts).
+  {
+    std::vector<char> seen(tri.number_of_faces(), 0);
+    std::vector<int> stack;
+    for(int start = 0; start < tri.number_of_faces(); ++start)
+    {
+      if(seen[start])
+        continue;
+      const Location initial = tri.to_input(Location{start, {{1. / 3, 1. / 3, 1. / 3}}});
+      const Welded_region region = initial.face < int(disc.patch_faces) ? Welded_region::PATCH
+                                   : initial.face < int(disc.patch_faces + disc.fill_faces) ? Welded_region::HOLE_FILL
+                                                                                            : Welded_region::ANNULUS;
+      seen[start] = 1;
+      stack.assign(1, start);
+      while(!stack.empty())
+      {
+        const int f = stack.back();
+        stack.pop_back();
+        result.face_region[f] = region;
+        in_patch[f] = region == Welded_region::PATCH;
+        for(int c = 0; c < 3; ++c)
+        {
+          const int h = tri.halfedge(f, c), t = tri.opposite(h);
+          if(t < 0 || tri.is_unflippable(tri.edge(h)) || seen[tri.face(t)])
+            continue;
+          seen[tri.face(t)] = 1;
+          stack.push_back(tri.face(t));
+        }
+      }
+    }
+  }
+  // Seams are never flipped, so the faces of a flip stay in one region.
+  for(std::size_t i = 0; i < tri.number_of_flips(); ++i)
+    result.report.hole_fill_flips += result.face_region[tri.faces_of_flip(i).first] == Welded_region::HOLE_FILL ? 1 : 0;
+}
+
+// The layout of the final triangulation (for a planar patch, its isometric one), the triangles of
+// its patch region and the planar positions of the input vertices.
+inline void lay_out(Conformal_flattening& result, const Flattening_state& state, const Time_limit& time_limit)
+{
+  const Intrinsic_triangulation<double>& tri = result.triangulation;
+  const welding::Indexed_patch& patch = result.patch;
+  const std::vector<char>& in_patch = state.in_patch;
+  const std::vector<Intrinsic_triangulation<double>::Point_2> positions =
+    state.planar ? internal::welding::planar_coordinates(patch) : tri.layout();
+  time_limit.check("after the layout");
+  result.layout.reserve(positions.size());
+  for(const auto& p : positions)
+    result.layout.push_back(Epick::Point_2(p[0], p[1]));
+  for(int f = 0; f < tri.number_of_faces(); ++f)
+    if(in_patch[f])
+    {
+      result.triangles.push_back({{tri.vertex(f, 0), tri.vertex(f, 1), tri.vertex(f, 2)}});
+      result.triangle_face.push_back(f);
+    }
+
+  result.uv.assign(result.layout.begin(), result.layout.begin() + std::ptrdiff_t(patch.number_of_input_vertices));
+}
+
+// A vertex of the outer loop among `loops`: the welded one; for a planar patch, the one
+// enclosing the largest area.
+inline int outer_loop_marker(const Conformal_flattening& result, const Flattening_state& state,
+                             const std::vector<std::vector<int> >& loops)
+{
+  int outer_marker = result.patch.boundary_loops[state.welded].front();
+  if(state.planar)
+  {
+    double largest = -std::numeric_limits<double>::infinity();
+    for(const std::vector<int>& loop : loops)
+    {
+      double area = 0.;
+      for(std::size_t i = 0; i < loop.size(); ++i)
+      {
+        const Epick::Point_2 &p = result.layout[loop[i]], &q = result.layout[loop[(i + 1) % loop.size()]];
+        area += p.x() * q.y() - q.x() * p.y();
+      }
+      if(area > largest)
+      {
+        largest = area;
+        outer_marker = loop.front();
+      }
+    }
+  }
+  return outer_marker;
+}
+
+// The domain boundary: loops of the patch region, each vertex with its surface point. Leaves
+// the loops in `state.loops`, the outer one first.
+inline void make_domain_boundary(Conformal_flattening& result, Flattening_state& state)
+{
+  const Intrinsic_triangulation<double>& tri = result.triangulation;
+  const welding::Indexed_patch& patch = result.patch;
+  std::vector<std::vector<int> >& loops = state.loops;
+  loops = internal::region_boundary_loops(tri, state.in_patch);
+  // The first corner of a patch triangle at each vertex (visited backwards, the first one written
+  // last), to map the loops' vertices, the only ones the domain needs, to the surface.
+  std::vector<std::pair<std::size_t, int> > corner_at(tri.number_of_vertices());
+  for(std::size_t t = result.triangles.size(); t-- > 0;)
+    for(int c = 3; c-- > 0;)
+      corner_at[result.triangles[t][c]] = {t, c};
+  auto domain_point = [&](int v) {
+    Domain_point point = result.corner_to_surface(corner_at[v].first, corner_at[v].second);
+    point.uv = result.layout[v];
+    if(v < int(patch.number_of_input_vertices))
+      point.input_vertex = std::size_t(v);
+    return point;
+  };
+  const int outer_marker = outer_loop_marker(result, state, loops);
+  for(const std::vector<int>& loop : loops)
+  {
+    std::vector<Domain_point> polygon;
+    for(int v : loop)
+      polygon.push_back(domain_point(v));
+    if(std::find(loop.begin(), loop.end(), outer_marker) != loop.end())
+      result.outer_boundary = polygon;
+    else
+      result.holes.push_back(polygon);
+  }
+  // Outer loop first for the check, as indices into the layout.
+  std::stable_partition(loops.begin(), loops.end(), [&](const std::vector<int>& loop) {
+    return std::find(loop.begin(), loop.end(), outer_marker) != loop.end();
+  });
+}
+
+// The exact check of the patch region's triangulation with its boundary loops, outer one first.
+inline Planar_embedding_report check_domain_embedding(const Conformal_flattening& result,
+                                                      const std::vector<std::vector<int> >& loops)
+{
+  std::vector<std::array<std::size_t, 3> > triangles;
+  for(const auto& t : result.triangles)
+    triangles.push_back({{std::size_t(t[0]), std::size_t(t[1]), std::size_t(t[2])}});
+  std::vector<std::vector<std::size_t> > index_loops;
+  for(const auto& loop : loops)
+    index_loops.emplace_back(loop.begin(), loop.end());
+  return check_planar_embedding(result.layout, triangles, index_loops);
+}
+
+// The conformal factor: vertex scaling multiplies lengths at vertex i by exp(2 u_i) (paper
+// Eqn. 3.5), after the welding's uniform scale, and the layout is isometric to the final metric.
+inline void compute_conformal_factors(Conformal_flattening& result, const Flattening_state& state)
+{
+  const welding::Indexed_patch& patch = result.patch;
+  Flattening_report& report = result.report;
+  result.conformal_factor.resize(patch.number_of_input_vertices);
+  for(std::size_t v = 0; v < patch.number_of_input_vertices; ++v)
+    result.conformal_factor[v] = 2. * state.flow.conformal_factors[v] + std::log(state.disc.scale);
+  const auto range = std::minmax_element(result.conformal_factor.begin(), result.conformal_factor.end());
+  report.min_scale = std::exp(*range.first);
+  report.max_scale = std::exp(*range.second);
+}
+
+// The input triangles whose corners' uv are not counterclockwise
+// (`Flattening_report::folded_input_triangles_in_uv`).
+template <typename TriangleMesh, typename VertexIndexMap>
+void count_folded_input_triangles(const TriangleMesh& mesh, VertexIndexMap vim, Conformal_flattening& result)
+{
+  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
+  Flattening_report& report = result.report;
+  for(auto f : faces(mesh))
+  {
+    if(report.embedding.non_finite_points > 0)
+      break;
+    const halfedge_descriptor h0 = halfedge(f, mesh);
+    if(CGAL::orientation(result.uv[get(vim, source(h0, mesh))], result.uv[get(vim, target(h0, mesh))],
+                         result.uv[get(vim, target(next(h0, mesh), mesh))]) != CGAL::POSITIVE)
+      ++report.folded_input_triangles_in_uv;
+  }
+}
+
+// The status of the report: not converged, or not an embedding (which prevails).
+inline void set_flattening_status(Flattening_report& report)
+{
+  if(!report.converged)
+    report.status = Error_code::NOT_CONVERGED;
+  if(!report.embedding.is_embedding())
+    report.status = Error_code::NOT_AN_EMBEDDING;
+}
+
+} // namespace flattening
+
 } // namespace internal
 
 /// \ingroup PkgConformalRemeshingRef
@@ -479,317 +901,69 @@ Conformal_flattening conformal_flatten(const TriangleMesh& mesh,
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
-  typedef typename boost::graph_traits<TriangleMesh>::halfedge_descriptor halfedge_descriptor;
+  namespace flattening = internal::flattening;
   typedef std::chrono::steady_clock Clock;
   auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
   const internal::Time_limit time_limit = internal::Time_limit::from(np, "conformal_flatten");
 
   // --- the input must be a patch: valid, connected, genus 0, with a boundary ----------------
-  const Mesh_check_report checks = check_mesh(mesh, np);
-  // Two vertices at one place are fine here: a patch cut from a surface may touch itself at a
-  // vertex, which its mesh has twice. Every other defect is not.
-  if(checks.defects.size() > std::size_t(checks.count(Mesh_defect::DUPLICATED_VERTEX) > 0))
-    throw Error(Error_code::INVALID_INPUT, "conformal_flatten: invalid input mesh: " + checks.summary());
-  if(checks.components.size() != 1)
-    throw Error(Error_code::INVALID_INPUT, "conformal_flatten: the mesh has " + std::to_string(checks.components.size())
-                                             + " connected components; a patch has one");
-  if(checks.components[0].genus != 0)
-    throw Error(Error_code::INVALID_INPUT, "conformal_flatten: the mesh has genus " + std::to_string(checks.components[0].genus)
-                                             + "; a patch must have genus 0 (cut its handles first)");
-  if(checks.components[0].boundary_loops == 0)
-    throw Error(Error_code::INVALID_INPUT, "conformal_flatten: the mesh is closed; a patch needs at least one boundary loop");
+  const Mesh_check_report checks = flattening::check_patch(mesh, np);
   time_limit.check("after the input checks");
 
+  // --- welding ---------------------------------------------------------------------------------
   const Clock::time_point start = Clock::now();
   auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(vertex_point, mesh));
   auto vim = CGAL::get_initialized_vertex_index_map(mesh, np);
   auto fim = CGAL::get_initialized_face_index_map(mesh, np);
-  const double inner_radius = choose_parameter(get_parameter(np, internal_np::annulus_inner_radius), 0.3);
-  if(!(inner_radius > 0. && inner_radius < 1.))
-    throw Error(Error_code::INVALID_INPUT, "conformal_flatten: the annulus inner radius must be in (0, 1)");
+  const double inner_radius = flattening::checked_inner_radius(np);
 
   Conformal_flattening result;
   Flattening_report& report = result.report;
   internal::welding::Indexed_patch& patch = result.patch;
   patch = internal::welding::make_indexed_patch(mesh, vpm, vim, fim);
   report.boundary_loops = patch.boundary_loops.size();
-  // Valid coordinates can still be out of range for the lengths and areas the flow computes
-  // (their squares overflow or underflow): say so rather than fail on a zero length later.
-  for(const auto& f : patch.faces)
-    for(int c = 0; c < 3; ++c)
-    {
-      const double length = internal::welding::distance(patch.points[f[c]], patch.points[f[(c + 1) % 3]]);
-      if(!(length >= 1e-125 && length <= 1e125))
-      {
-        std::ostringstream os;
-        os << "conformal_flatten: an edge length of " << length
-           << " is out of the range of the flow's double precision computations (1e-125 to 1e125); scale the mesh";
-        throw Error(Error_code::INVALID_INPUT, os.str());
-      }
-    }
+  flattening::check_edge_length_range(patch);
 
-  // The loop to weld: the one of the given border halfedge, or the longest.
-  std::size_t welded = 0;
-  const auto chosen = get_parameter(np, internal_np::welded_boundary);
-  if constexpr(!std::is_same<std::decay_t<decltype(chosen)>, CGAL::internal_np::Param_not_found>::value)
-  {
-    const halfedge_descriptor h = chosen;
-    if(!is_border(h, mesh))
-      throw Error(Error_code::INVALID_INPUT, "conformal_flatten: welded_boundary() needs a border halfedge");
-    const int v = int(get(vim, source(h, mesh)));
-    for(std::size_t l = 0; l < patch.boundary_loops.size(); ++l)
-      if(std::find(patch.boundary_loops[l].begin(), patch.boundary_loops[l].end(), v) != patch.boundary_loops[l].end())
-        welded = l;
-  }
-  else
-  {
-    for(std::size_t l = 1; l < patch.boundary_loops.size(); ++l)
-      if(patch.loop_length(patch.boundary_loops[l]) > patch.loop_length(patch.boundary_loops[welded]))
-        welded = l;
-  }
+  flattening::Flattening_state state;
+  state.welded = flattening::welded_loop(mesh, vim, patch, np);
   // A planar patch (a CAD face) is flat already: its isometric layout is the flattening, with
   // no welding, no flow and no split (the map is the identity inside every triangle). Not if it
   // touches itself (a slit along a feature): the flow must open it.
-  const bool planar = checks.count(Mesh_defect::DUPLICATED_VERTEX) == 0 && internal::welding::is_planar(patch);
-  const std::size_t points_before = patch.points.size();
-  const double maximum_length = choose_parameter(get_parameter(np, internal_np::maximum_edge_length), 0.);
-  if(!planar)
-  {
-    patch.split_long_boundary_edges(welded, patch.loop_length(patch.boundary_loops[welded]) / 32.);
-    report.boundary_splits = patch.points.size() - points_before;
-    // (A planar patch is not flipped: its own triangles are laid out.) Grid points inside the
-    // coplanar regions at 1/1.5 of the maximum length: the diagonals of their squares are short
-    // enough not to be split.
-    report.retriangulated_faces = internal::welding::retriangulate_flat_regions(patch, maximum_length / 1.5);
-  }
+  state.planar = checks.count(Mesh_defect::DUPLICATED_VERTEX) == 0 && internal::welding::is_planar(patch);
+  state.maximum_length = choose_parameter(get_parameter(np, internal_np::maximum_edge_length), 0.);
+  if(!state.planar)
+    flattening::prepare_patch(patch, state, report);
 
-  internal::welding::Welded_disc disc = planar ? internal::welding::unwelded_disc(patch)
-                                               : internal::welding::weld(patch, welded, inner_radius, maximum_length / 1.5);
-  report.flat_sides_shortened = internal::welding::open_numerically_flat_faces(disc);
-  result.welded_faces = disc.faces;
-  result.faces_of_vertex_start.assign(patch.points.size() + 1, 0);
-  for(const auto& f : patch.faces)
-    for(int v : f)
-      ++result.faces_of_vertex_start[v + 1];
-  for(std::size_t v = 0; v < patch.points.size(); ++v)
-    result.faces_of_vertex_start[v + 1] += result.faces_of_vertex_start[v];
-  result.faces_of_vertex.resize(result.faces_of_vertex_start.back());
-  {
-    std::vector<int> fill(result.faces_of_vertex_start.begin(), result.faces_of_vertex_start.end() - 1);
-    for(std::size_t f = 0; f < patch.faces.size(); ++f)
-      for(int v : patch.faces[f])
-        result.faces_of_vertex[fill[v]++] = int(f);
-  }
-  report.welded_vertices = disc.number_of_vertices;
-  Intrinsic_triangulation<double>& tri = result.triangulation;
-  tri = Intrinsic_triangulation<double>(disc.number_of_vertices, disc.faces, disc.lengths);
-  {
-    std::map<std::pair<int, int>, bool> seam;
-    for(const auto& e : disc.seams)
-      seam[std::minmax(e.first, e.second)] = true;
-    for(int f = 0; f < tri.number_of_faces(); ++f)
-      for(int c = 0; c < 3; ++c)
-        if(seam.count(std::minmax(tri.vertex(f, c), tri.vertex(f, (c + 1) % 3))))
-          tri.set_unflippable(tri.edge(f, c));
-  }
+  flattening::weld_patch(result, state, inner_radius);
   const Clock::time_point refinement_start = Clock::now();
-  const std::size_t split_limit = (std::max)(std::size_t(1000000), 20 * patch.points.size());
-  if(maximum_length > 0. && !planar &&
-     !internal::split_long_patch_edges(tri, disc.patch_faces, disc.scale * maximum_length, split_limit, report.edge_splits))
-  {
-    std::ostringstream os;
-    os << "conformal_flatten: a maximum_edge_length of " << maximum_length << " needs more than " << split_limit
-       << " edge splits on this mesh; give a length closer to its edge lengths";
-    throw Error(Error_code::INVALID_INPUT, os.str());
-  }
-  const std::size_t refinement_flips = tri.number_of_flips();
+  flattening::refine_patch_region(result, state);
   report.seconds_refinement = seconds_since(refinement_start);
   report.seconds_welding = seconds_since(start);
   time_limit.check("after the welding");
 
   // --- the flow: flat everywhere, convex free boundary ----------------------------------------
-  // The welded disc's only boundary is the annulus' inner circle.
   const Clock::time_point flow_start = Clock::now();
-  Ricci_flow_result<double> flow;
-  if(planar)
-  {
-    flow.status = Error_code::SUCCESS;
-    flow.converged = true;
-    flow.conformal_factors.assign(tri.number_of_vertices(), 0.);
-  }
-  else
-  {
-    try
-    {
-      flow = discrete_ricci_flow(
-        tri, disc_flattening_targets(tri),
-        parameters::maximum_running_time(
-          time_limit.remaining(),
-          parameters::curvature_tolerance(
-            choose_parameter(get_parameter(np, internal_np::curvature_tolerance), 1e-10),
-            CGAL::parameters::number_of_iterations(
-              choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 50)))));
-    }
-    catch(const Error& e)
-    {
-      // The flow's message counts from its own start: say it with this call's limit.
-      if(e.code() == Error_code::TIME_LIMIT_EXCEEDED)
-        time_limit.check("during the Ricci flow");
-      throw;
-    }
-  }
+  flattening::run_flow(result.triangulation, state, time_limit, np);
   report.seconds_flow = seconds_since(flow_start);
   time_limit.check("after the Ricci flow");
-  report.converged = flow.converged;
-  report.iterations = flow.iterations;
-  report.curvature_error = flow.max_curvature_error;
-  report.flips = refinement_flips + flow.number_of_flips;
-  report.flow_message = flow.message;
-  report.seconds_flips = flow.seconds_flips;
-  report.seconds_factorization = flow.seconds_factorization;
-  report.seconds_solve = flow.seconds_solve;
-  report.seconds_line_search = flow.seconds_line_search;
+  flattening::report_flow(report, state);
 
   // --- layout, and the patch region of the final triangulation --------------------------------
   const Clock::time_point layout_start = Clock::now();
-  typedef Intrinsic_triangulation<double>::Face_location Location;
-  std::vector<char> in_patch(tri.number_of_faces(), 0);
-  result.face_region.resize(tri.number_of_faces());
-  // The regions are bounded by seams (welded and hole loops), which are never flipped, and their
-  // split halves: one walk back through the correspondence per connected set of faces across the
-  // other edges suffices (a walk per face is far slower on large CAD parts).
-  {
-    std::vector<char> seen(tri.number_of_faces(), 0);
-    std::vector<int> stack;
-    for(int start = 0; start < tri.number_of_faces(); ++start)
-    {
-      if(seen[start])
-        continue;
-      const Location initial = tri.to_input(Location{start, {{1. / 3, 1. / 3, 1. / 3}}});
-      const Welded_region region = initial.face < int(disc.patch_faces) ? Welded_region::PATCH
-                                   : initial.face < int(disc.patch_faces + disc.fill_faces) ? Welded_region::HOLE_FILL
-                                                                                            : Welded_region::ANNULUS;
-      seen[start] = 1;
-      stack.assign(1, start);
-      while(!stack.empty())
-      {
-        const int f = stack.back();
-        stack.pop_back();
-        result.face_region[f] = region;
-        in_patch[f] = region == Welded_region::PATCH;
-        for(int c = 0; c < 3; ++c)
-        {
-          const int h = tri.halfedge(f, c), t = tri.opposite(h);
-          if(t < 0 || tri.is_unflippable(tri.edge(h)) || seen[tri.face(t)])
-            continue;
-          seen[tri.face(t)] = 1;
-          stack.push_back(tri.face(t));
-        }
-      }
-    }
-  }
-  // Seams are never flipped, so the faces of a flip stay in one region.
-  for(std::size_t i = 0; i < tri.number_of_flips(); ++i)
-    report.hole_fill_flips += result.face_region[tri.faces_of_flip(i).first] == Welded_region::HOLE_FILL ? 1 : 0;
-  const std::vector<Intrinsic_triangulation<double>::Point_2> positions = planar ? internal::welding::planar_coordinates(patch)
-                                                                                  : tri.layout();
-  time_limit.check("after the layout");
-  result.layout.reserve(positions.size());
-  for(const auto& p : positions)
-    result.layout.push_back(Epick::Point_2(p[0], p[1]));
-  for(int f = 0; f < tri.number_of_faces(); ++f)
-    if(in_patch[f])
-    {
-      result.triangles.push_back({{tri.vertex(f, 0), tri.vertex(f, 1), tri.vertex(f, 2)}});
-      result.triangle_face.push_back(f);
-    }
-
-  result.uv.assign(result.layout.begin(), result.layout.begin() + std::ptrdiff_t(patch.number_of_input_vertices));
-
-  // The domain boundary: loops of the patch region, each vertex with its surface point.
-  std::vector<std::vector<int> > loops = internal::region_boundary_loops(tri, in_patch);
-  // The first corner of a patch triangle at each vertex (visited backwards, the first one written
-  // last), to map the loops' vertices, the only ones the domain needs, to the surface.
-  std::vector<std::pair<std::size_t, int> > corner_at(tri.number_of_vertices());
-  for(std::size_t t = result.triangles.size(); t-- > 0;)
-    for(int c = 3; c-- > 0;)
-      corner_at[result.triangles[t][c]] = {t, c};
-  auto domain_point = [&](int v) {
-    Domain_point point = result.corner_to_surface(corner_at[v].first, corner_at[v].second);
-    point.uv = result.layout[v];
-    if(v < int(patch.number_of_input_vertices))
-      point.input_vertex = std::size_t(v);
-    return point;
-  };
-  // The outer loop: the welded one; for a planar patch, the one enclosing the largest area.
-  int outer_marker = patch.boundary_loops[welded].front();
-  if(planar)
-  {
-    double largest = -std::numeric_limits<double>::infinity();
-    for(const std::vector<int>& loop : loops)
-    {
-      double area = 0.;
-      for(std::size_t i = 0; i < loop.size(); ++i)
-      {
-        const Epick::Point_2 &p = result.layout[loop[i]], &q = result.layout[loop[(i + 1) % loop.size()]];
-        area += p.x() * q.y() - q.x() * p.y();
-      }
-      if(area > largest)
-      {
-        largest = area;
-        outer_marker = loop.front();
-      }
-    }
-  }
-  for(const std::vector<int>& loop : loops)
-  {
-    std::vector<Domain_point> polygon;
-    for(int v : loop)
-      polygon.push_back(domain_point(v));
-    if(std::find(loop.begin(), loop.end(), outer_marker) != loop.end())
-      result.outer_boundary = polygon;
-    else
-      result.holes.push_back(polygon);
-  }
-  // Outer loop first for the check, as indices into the layout.
-  std::stable_partition(loops.begin(), loops.end(), [&](const std::vector<int>& loop) {
-    return std::find(loop.begin(), loop.end(), outer_marker) != loop.end();
-  });
+  flattening::find_welded_regions(result, state);
+  flattening::lay_out(result, state, time_limit);
+  flattening::make_domain_boundary(result, state);
   report.seconds_layout = seconds_since(layout_start);
 
   // --- verification with exact predicates -------------------------------------------------------
   const Clock::time_point check_start = Clock::now();
-  std::vector<std::array<std::size_t, 3> > triangles;
-  for(const auto& t : result.triangles)
-    triangles.push_back({{std::size_t(t[0]), std::size_t(t[1]), std::size_t(t[2])}});
-  std::vector<std::vector<std::size_t> > index_loops;
-  for(const auto& loop : loops)
-    index_loops.emplace_back(loop.begin(), loop.end());
-  report.embedding = check_planar_embedding(result.layout, triangles, index_loops);
+  report.embedding = flattening::check_domain_embedding(result, state.loops);
   report.seconds_check = seconds_since(check_start);
 
-  // The conformal factor: vertex scaling multiplies lengths at vertex i by exp(2 u_i) (paper
-  // Eqn. 3.5), after the welding's uniform scale, and the layout is isometric to the final metric.
-  result.conformal_factor.resize(patch.number_of_input_vertices);
-  for(std::size_t v = 0; v < patch.number_of_input_vertices; ++v)
-    result.conformal_factor[v] = 2. * flow.conformal_factors[v] + std::log(disc.scale);
-  const auto range = std::minmax_element(result.conformal_factor.begin(), result.conformal_factor.end());
-  report.min_scale = std::exp(*range.first);
-  report.max_scale = std::exp(*range.second);
-  for(auto f : faces(mesh))
-  {
-    if(report.embedding.non_finite_points > 0)
-      break;
-    const halfedge_descriptor h0 = halfedge(f, mesh);
-    if(CGAL::orientation(result.uv[get(vim, source(h0, mesh))], result.uv[get(vim, target(h0, mesh))],
-                         result.uv[get(vim, target(next(h0, mesh), mesh))]) != CGAL::POSITIVE)
-      ++report.folded_input_triangles_in_uv;
-  }
-
-  if(!report.converged)
-    report.status = Error_code::NOT_CONVERGED;
-  if(!report.embedding.is_embedding())
-    report.status = Error_code::NOT_AN_EMBEDDING;
+  // --- the report ------------------------------------------------------------------------------
+  flattening::compute_conformal_factors(result, state);
+  flattening::count_folded_input_triangles(mesh, vim, result);
+  flattening::set_flattening_status(report);
   return result;
 }
 

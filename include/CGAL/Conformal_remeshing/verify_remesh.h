@@ -195,6 +195,223 @@ inline void compare_topologies(Remesh_verification& v)
   v.topology_kept = v.same_number_of_components && sorted(in, both) == sorted(out, both);
 }
 
+namespace verification {
+
+// A point in double precision, in the kernel of the input's points.
+template <typename Kernel, typename Point>
+typename Kernel::Point_3 double_point(const Point& p)
+{
+  return typename Kernel::Point_3(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+}
+
+// Whether the coordinates of a point are finite.
+template <typename Point_3>
+bool is_finite_point(const Point_3& p)
+{
+  return std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z());
+}
+
+// The input must be able to serve as a reference: a non-empty manifold triangle mesh with finite
+// coordinates and no degenerate face. Returns its checks.
+template <typename InputMesh>
+Mesh_check_report check_reference_mesh(const InputMesh& input)
+{
+  Mesh_check_report input_checks = check_mesh(input);
+  if(faces(input).empty() || !is_triangle_mesh(input) || input_checks.count(Mesh_defect::NON_FINITE_COORDINATES) > 0
+     || input_checks.count(Mesh_defect::DEGENERATE_FACE) > 0 || !input_checks.topology_available)
+    throw Error(Error_code::INVALID_INPUT,
+                "verify_remesh: the input must be a non-empty manifold triangle mesh with finite coordinates and no "
+                "degenerate face (" + input_checks.summary() + ")");
+  return input_checks;
+}
+
+// The distance queries construct points (projections onto the input's faces) in double
+// precision, and CGAL's exact fallback traps on the NaN that a vanishing or overflowing square
+// gives them: every squared edge length and squared double area of the input must be a
+// normal number.
+template <typename Kernel, typename InputMesh>
+void check_reference_face_sizes(const InputMesh& input)
+{
+  typedef typename boost::graph_traits<InputMesh>::face_descriptor input_face_descriptor;
+  typedef typename boost::graph_traits<InputMesh>::halfedge_descriptor input_halfedge_descriptor;
+  const auto input_points = get(CGAL::vertex_point, input);
+  std::size_t index = 0;
+  for(input_face_descriptor f : faces(input))
+  {
+    const input_halfedge_descriptor h = halfedge(f, input);
+    const typename Kernel::Point_3 p = double_point<Kernel>(get(input_points, source(h, input)));
+    const typename Kernel::Point_3 q = double_point<Kernel>(get(input_points, target(h, input)));
+    const typename Kernel::Point_3 r = double_point<Kernel>(get(input_points, target(next(h, input), input)));
+    const double squares[] = {CGAL::to_double((q - p).squared_length()), CGAL::to_double((r - q).squared_length()),
+                              CGAL::to_double((p - r).squared_length()),
+                              CGAL::to_double(CGAL::cross_product(q - p, r - p).squared_length())};
+    for(double x : squares)
+      if(!std::isnormal(x))
+        throw Error(Error_code::INVALID_INPUT, "verify_remesh: input face " + std::to_string(index)
+                                                 + " is too small or too large for distances in double precision");
+    ++index;
+  }
+}
+
+// The input's diagonal and the distance tolerance, from the parameters and the input's box.
+template <typename NamedParameters>
+void set_distance_tolerance(Remesh_verification& v, const CGAL::Bbox_3& box, const NamedParameters& np)
+{
+  v.input_diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin())
+                               + CGAL::square(box.zmax() - box.zmin()));
+  // Fourth powers of lengths up to a hundred diagonals stay finite (see the distance queries).
+  if(!(v.input_diagonal <= 1e70))
+    throw Error(Error_code::INVALID_INPUT, "verify_remesh: the input's bounding-box diagonal exceeds 1e70, too much for "
+                                           "distances in double precision");
+  // A point on a face is stored to the precision of a double at the magnitude of the
+  // coordinates: a relative tolerance finer than a few units in the last place of the largest
+  // coordinate would fail exact remeshings of small parts far from the origin.
+  const double magnitude = (std::max)({std::abs(box.xmin()), std::abs(box.xmax()), std::abs(box.ymin()),
+                                       std::abs(box.ymax()), std::abs(box.zmin()), std::abs(box.zmax())});
+  const double precision = 16. * (std::nextafter(magnitude, std::numeric_limits<double>::infinity()) - magnitude);
+  const double relative = CGAL::parameters::choose_parameter(
+    CGAL::parameters::get_parameter(np, internal_np::relative_distance_tolerance), 1e-9);
+  if(!(relative >= 0.) || !std::isfinite(relative))
+    throw Error(Error_code::INVALID_INPUT, "verify_remesh: the distance tolerance must be finite and non-negative");
+  v.tolerance = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::distance_tolerance),
+                                                   (std::max)(relative * v.input_diagonal, precision));
+  if(!(v.tolerance >= 0.) || !std::isfinite(v.tolerance))
+    throw Error(Error_code::INVALID_INPUT, "verify_remesh: the distance tolerance must be finite and non-negative");
+}
+
+// The output as a mesh: its sizes, its checks, whether it is a valid triangle mesh and a
+// manifold one.
+template <typename OutputMesh>
+void check_output_mesh(Remesh_verification& v, const OutputMesh& output)
+{
+  // num_vertices() of a CGAL::Surface_mesh counts removed elements too: count the ranges.
+  v.output_vertices = std::size_t(std::distance(vertices(output).begin(), vertices(output).end()));
+  v.output_faces = std::size_t(std::distance(faces(output).begin(), faces(output).end()));
+  v.output_checks = check_mesh(output);
+  const Mesh_check_report& c = v.output_checks;
+  const bool finite = c.count(Mesh_defect::NON_FINITE_COORDINATES) == 0;
+  // CGAL's structural check counts an isolated vertex as broken; the defect list reports it.
+  v.valid_triangle_mesh = c.count(Mesh_defect::EMPTY_MESH) == 0 && c.count(Mesh_defect::INVALID_VERTEX_INDEX) == 0
+                          && finite && c.count(Mesh_defect::NON_TRIANGLE_FACE) == 0
+                          && c.count(Mesh_defect::DEGENERATE_FACE) == 0 && c.count(Mesh_defect::DUPLICATED_VERTEX) == 0
+                          && c.count(Mesh_defect::ISOLATED_VERTEX) == 0 && is_valid_polygon_mesh(output);
+  v.manifold = c.count(Mesh_defect::NON_MANIFOLD_EDGE) == 0 && c.count(Mesh_defect::NON_MANIFOLD_VERTEX) == 0
+               && c.count(Mesh_defect::INCONSISTENT_ORIENTATION) == 0 && c.count(Mesh_defect::NON_ORIENTABLE) == 0;
+}
+
+// The self-intersections of the output (a valid triangle mesh), with exact predicates.
+template <typename Concurrency_tag, typename OutputMesh>
+void check_self_intersections(Remesh_verification& v, const OutputMesh& output)
+{
+  typedef typename boost::graph_traits<OutputMesh>::face_descriptor output_face_descriptor;
+  namespace PMP = CGAL::Polygon_mesh_processing;
+  std::vector<std::pair<output_face_descriptor, output_face_descriptor> > pairs;
+  PMP::self_intersections<Concurrency_tag>(output, std::back_inserter(pairs));
+  v.self_intersections_checked = true;
+  // A pair (f, f) stands for a degenerate face, which the mesh checks already report.
+  v.self_intersecting_face_pairs = std::size_t(std::count_if(pairs.begin(), pairs.end(),
+                                                             [](const auto& p) { return p.first != p.second; }));
+  v.self_intersection_free = v.self_intersecting_face_pairs == 0;
+}
+
+// The topologies of the input's and the output's components, compared.
+inline void check_topology(Remesh_verification& v, const Mesh_check_report& input_checks)
+{
+  v.input_components = input_checks.components;
+  v.output_components = v.output_checks.components;
+  internal::compare_topologies(v);
+}
+
+// Every output vertex on the input surface.
+template <typename Kernel, typename InputMesh, typename OutputMesh>
+void check_distances_to_input(Remesh_verification& v, const InputMesh& input, const OutputMesh& output,
+                              const CGAL::Bbox_3& box)
+{
+  const double squared_tolerance = v.tolerance * v.tolerance;
+  typedef CGAL::AABB_face_graph_triangle_primitive<InputMesh> Primitive;
+  typedef CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive> > Tree;
+  const Tree tree(faces(input).first, faces(input).second, input);
+  const auto output_points = get(CGAL::vertex_point, output);
+  for(auto w : vertices(output))
+  {
+    const typename Kernel::Point_3 p = double_point<Kernel>(get(output_points, w));
+    // The tree's projections multiply up to four differences of coordinates: a point more than
+    // a hundred diagonals from the input's box (or a non-finite one) could make them overflow
+    // to NaN, so it is kept away from the tree, and its distance to the box is a lower bound.
+    const double outside = CGAL::square((std::max)({box.xmin() - p.x(), p.x() - box.xmax(), 0.}))
+                           + CGAL::square((std::max)({box.ymin() - p.y(), p.y() - box.ymax(), 0.}))
+                           + CGAL::square((std::max)({box.zmin() - p.z(), p.z() - box.zmax(), 0.}));
+    double d2 = std::numeric_limits<double>::infinity();
+    if(is_finite_point(p))
+      d2 = outside <= CGAL::square(100. * v.input_diagonal) ? CGAL::to_double(tree.squared_distance(p)) : outside;
+    if(!(d2 <= squared_tolerance))
+      ++v.vertices_off_surface;
+    v.max_distance_to_input = (std::max)(v.max_distance_to_input, std::sqrt(d2));
+  }
+  v.on_input_surface = v.vertices_off_surface == 0;
+}
+
+// Every output vertex at its given location, if locations are given.
+template <typename Kernel, typename InputMesh, typename OutputMesh, typename NamedParameters>
+void check_vertex_locations(Remesh_verification& v, const InputMesh& input, const OutputMesh& output,
+                            const NamedParameters& np)
+{
+  typedef typename boost::graph_traits<InputMesh>::face_descriptor input_face_descriptor;
+  typedef typename boost::graph_traits<InputMesh>::halfedge_descriptor input_halfedge_descriptor;
+  v.locations_match = true;
+  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::vertex_locations_t>::value)
+  {
+    const auto& locations = CGAL::parameters::get_parameter_reference(np, internal_np::vertex_locations);
+    v.locations_checked = true;
+    auto fim = CGAL::get_initialized_face_index_map(input, np);
+    std::vector<input_face_descriptor> face_at;
+    for(input_face_descriptor f : faces(input))
+    {
+      const std::size_t index = std::size_t(get(fim, f));
+      if(index >= face_at.size())
+        face_at.resize(index + 1, boost::graph_traits<InputMesh>::null_face());
+      face_at[index] = f;
+    }
+    const auto input_points = get(CGAL::vertex_point, input);
+    const auto output_points = get(CGAL::vertex_point, output);
+    const std::size_t nb_locations = std::size_t(locations.size());
+    std::size_t i = 0;
+    for(auto w : vertices(output))
+    {
+      double error = std::numeric_limits<double>::infinity();
+      if(i < nb_locations)
+      {
+        const auto& location = locations[i];
+        const std::size_t f = std::size_t(location.input_face);
+        const double b[3] = {double(location.coordinates[0]), double(location.coordinates[1]),
+                             double(location.coordinates[2])};
+        // Barycentric: no coordinate below -1e-9 and a sum of 1 within 1e-9 (rounding only).
+        const bool barycentric = std::isfinite(b[0]) && std::isfinite(b[1]) && std::isfinite(b[2])
+                                 && (std::min)({b[0], b[1], b[2]}) >= -1e-9 && std::abs(b[0] + b[1] + b[2] - 1.) <= 1e-9;
+        if(f < face_at.size() && face_at[f] != boost::graph_traits<InputMesh>::null_face() && barycentric)
+        {
+          const input_halfedge_descriptor h = halfedge(face_at[f], input);
+          const typename Kernel::Point_3 p = double_point<Kernel>(get(input_points, source(h, input)));
+          const typename Kernel::Point_3 q = double_point<Kernel>(get(input_points, target(h, input)));
+          const typename Kernel::Point_3 r = double_point<Kernel>(get(input_points, target(next(h, input), input)));
+          // Relative to a corner, so that a mesh far from the origin loses no precision.
+          const typename Kernel::Point_3 x = p + b[1] * (q - p) + b[2] * (r - p);
+          const typename Kernel::Point_3 y = double_point<Kernel>(get(output_points, w));
+          if(is_finite_point(y))
+            error = std::sqrt(CGAL::to_double(CGAL::squared_distance(x, y)));
+        }
+      }
+      if(!(error <= v.tolerance))
+        ++v.vertices_off_location;
+      v.max_location_error = (std::max)(v.max_location_error, error);
+      ++i;
+    }
+    v.locations_match = v.vertices_off_location == 0 && nb_locations == v.output_vertices;
+  }
+}
+
+} // namespace verification
+
 } // namespace internal
 
 /// \ingroup PkgConformalRemeshingRef
@@ -264,177 +481,25 @@ template <typename Concurrency_tag = CGAL::Parallel_if_available_tag, typename I
 Remesh_verification verify_remesh(const InputMesh& input, const OutputMesh& output,
                                   const NamedParameters& np = CGAL::parameters::default_values())
 {
-  typedef typename boost::graph_traits<InputMesh>::face_descriptor input_face_descriptor;
-  typedef typename boost::graph_traits<InputMesh>::halfedge_descriptor input_halfedge_descriptor;
-  typedef typename boost::graph_traits<OutputMesh>::face_descriptor output_face_descriptor;
   typedef typename boost::property_map<InputMesh, CGAL::vertex_point_t>::const_type Input_point_map;
   typedef typename boost::property_traits<Input_point_map>::value_type Point;
   typedef typename CGAL::Kernel_traits<Point>::Kernel Kernel;
   namespace PMP = CGAL::Polygon_mesh_processing;
+  namespace verification = internal::verification;
 
-  const Mesh_check_report input_checks = check_mesh(input);
-  if(faces(input).empty() || !is_triangle_mesh(input) || input_checks.count(Mesh_defect::NON_FINITE_COORDINATES) > 0
-     || input_checks.count(Mesh_defect::DEGENERATE_FACE) > 0 || !input_checks.topology_available)
-    throw Error(Error_code::INVALID_INPUT,
-                "verify_remesh: the input must be a non-empty manifold triangle mesh with finite coordinates and no "
-                "degenerate face (" + input_checks.summary() + ")");
-  auto point_of = [](const auto& p) {
-    return typename Kernel::Point_3(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
-  };
-  // The distance queries construct points (projections onto the input's faces) in double
-  // precision, and CGAL's exact fallback traps on the NaN that a vanishing or overflowing square
-  // gives them: every squared edge length and squared double area of the input must be a
-  // normal number.
-  {
-    const auto input_points = get(CGAL::vertex_point, input);
-    std::size_t index = 0;
-    for(input_face_descriptor f : faces(input))
-    {
-      const input_halfedge_descriptor h = halfedge(f, input);
-      const typename Kernel::Point_3 p = point_of(get(input_points, source(h, input)));
-      const typename Kernel::Point_3 q = point_of(get(input_points, target(h, input)));
-      const typename Kernel::Point_3 r = point_of(get(input_points, target(next(h, input), input)));
-      const double squares[] = {CGAL::to_double((q - p).squared_length()), CGAL::to_double((r - q).squared_length()),
-                                CGAL::to_double((p - r).squared_length()),
-                                CGAL::to_double(CGAL::cross_product(q - p, r - p).squared_length())};
-      for(double x : squares)
-        if(!std::isnormal(x))
-          throw Error(Error_code::INVALID_INPUT, "verify_remesh: input face " + std::to_string(index)
-                                                   + " is too small or too large for distances in double precision");
-      ++index;
-    }
-  }
+  const Mesh_check_report input_checks = verification::check_reference_mesh(input);
+  verification::check_reference_face_sizes<Kernel>(input);
 
   Remesh_verification v;
   const CGAL::Bbox_3 box = PMP::bbox(input);
-  v.input_diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin())
-                               + CGAL::square(box.zmax() - box.zmin()));
-  // Fourth powers of lengths up to a hundred diagonals stay finite (see the distance queries).
-  if(!(v.input_diagonal <= 1e70))
-    throw Error(Error_code::INVALID_INPUT, "verify_remesh: the input's bounding-box diagonal exceeds 1e70, too much for "
-                                           "distances in double precision");
-  // A point on a face is stored to the precision of a double at the magnitude of the
-  // coordinates: a relative tolerance finer than a few units in the last place of the largest
-  // coordinate would fail exact remeshings of small parts far from the origin.
-  const double magnitude = (std::max)({std::abs(box.xmin()), std::abs(box.xmax()), std::abs(box.ymin()),
-                                       std::abs(box.ymax()), std::abs(box.zmin()), std::abs(box.zmax())});
-  const double precision = 16. * (std::nextafter(magnitude, std::numeric_limits<double>::infinity()) - magnitude);
-  const double relative = CGAL::parameters::choose_parameter(
-    CGAL::parameters::get_parameter(np, internal_np::relative_distance_tolerance), 1e-9);
-  if(!(relative >= 0.) || !std::isfinite(relative))
-    throw Error(Error_code::INVALID_INPUT, "verify_remesh: the distance tolerance must be finite and non-negative");
-  v.tolerance = CGAL::parameters::choose_parameter(CGAL::parameters::get_parameter(np, internal_np::distance_tolerance),
-                                                   (std::max)(relative * v.input_diagonal, precision));
-  if(!(v.tolerance >= 0.) || !std::isfinite(v.tolerance))
-    throw Error(Error_code::INVALID_INPUT, "verify_remesh: the distance tolerance must be finite and non-negative");
-  const double squared_tolerance = v.tolerance * v.tolerance;
+  verification::set_distance_tolerance(v, box, np);
 
-  // The output as a mesh.
-  // num_vertices() of a CGAL::Surface_mesh counts removed elements too: count the ranges.
-  v.output_vertices = std::size_t(std::distance(vertices(output).begin(), vertices(output).end()));
-  v.output_faces = std::size_t(std::distance(faces(output).begin(), faces(output).end()));
-  v.output_checks = check_mesh(output);
-  const Mesh_check_report& c = v.output_checks;
-  const bool finite = c.count(Mesh_defect::NON_FINITE_COORDINATES) == 0;
-  // CGAL's structural check counts an isolated vertex as broken; the defect list reports it.
-  v.valid_triangle_mesh = c.count(Mesh_defect::EMPTY_MESH) == 0 && c.count(Mesh_defect::INVALID_VERTEX_INDEX) == 0
-                          && finite && c.count(Mesh_defect::NON_TRIANGLE_FACE) == 0
-                          && c.count(Mesh_defect::DEGENERATE_FACE) == 0 && c.count(Mesh_defect::DUPLICATED_VERTEX) == 0
-                          && c.count(Mesh_defect::ISOLATED_VERTEX) == 0 && is_valid_polygon_mesh(output);
-  v.manifold = c.count(Mesh_defect::NON_MANIFOLD_EDGE) == 0 && c.count(Mesh_defect::NON_MANIFOLD_VERTEX) == 0
-               && c.count(Mesh_defect::INCONSISTENT_ORIENTATION) == 0 && c.count(Mesh_defect::NON_ORIENTABLE) == 0;
-
+  verification::check_output_mesh(v, output);
   if(v.valid_triangle_mesh)
-  {
-    std::vector<std::pair<output_face_descriptor, output_face_descriptor> > pairs;
-    PMP::self_intersections<Concurrency_tag>(output, std::back_inserter(pairs));
-    v.self_intersections_checked = true;
-    // A pair (f, f) stands for a degenerate face, which the mesh checks already report.
-    v.self_intersecting_face_pairs = std::size_t(std::count_if(pairs.begin(), pairs.end(),
-                                                               [](const auto& p) { return p.first != p.second; }));
-    v.self_intersection_free = v.self_intersecting_face_pairs == 0;
-  }
-
-  v.input_components = input_checks.components;
-  v.output_components = c.components;
-  internal::compare_topologies(v);
-
-  // Every output vertex on the input surface.
-  typedef CGAL::AABB_face_graph_triangle_primitive<InputMesh> Primitive;
-  typedef CGAL::AABB_tree<CGAL::AABB_traits<Kernel, Primitive> > Tree;
-  const Tree tree(faces(input).first, faces(input).second, input);
-  const auto output_points = get(CGAL::vertex_point, output);
-  auto is_finite = [](const typename Kernel::Point_3& p) {
-    return std::isfinite(p.x()) && std::isfinite(p.y()) && std::isfinite(p.z());
-  };
-  for(auto w : vertices(output))
-  {
-    const typename Kernel::Point_3 p = point_of(get(output_points, w));
-    // The tree's projections multiply up to four differences of coordinates: a point more than
-    // a hundred diagonals from the input's box (or a non-finite one) could make them overflow
-    // to NaN, so it is kept away from the tree, and its distance to the box is a lower bound.
-    const double outside = CGAL::square((std::max)({box.xmin() - p.x(), p.x() - box.xmax(), 0.}))
-                           + CGAL::square((std::max)({box.ymin() - p.y(), p.y() - box.ymax(), 0.}))
-                           + CGAL::square((std::max)({box.zmin() - p.z(), p.z() - box.zmax(), 0.}));
-    double d2 = std::numeric_limits<double>::infinity();
-    if(is_finite(p))
-      d2 = outside <= CGAL::square(100. * v.input_diagonal) ? CGAL::to_double(tree.squared_distance(p)) : outside;
-    if(!(d2 <= squared_tolerance))
-      ++v.vertices_off_surface;
-    v.max_distance_to_input = (std::max)(v.max_distance_to_input, std::sqrt(d2));
-  }
-  v.on_input_surface = v.vertices_off_surface == 0;
-
-  // Every output vertex at its given location.
-  v.locations_match = true;
-  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::vertex_locations_t>::value)
-  {
-    const auto& locations = CGAL::parameters::get_parameter_reference(np, internal_np::vertex_locations);
-    v.locations_checked = true;
-    auto fim = CGAL::get_initialized_face_index_map(input, np);
-    std::vector<input_face_descriptor> face_at;
-    for(input_face_descriptor f : faces(input))
-    {
-      const std::size_t index = std::size_t(get(fim, f));
-      if(index >= face_at.size())
-        face_at.resize(index + 1, boost::graph_traits<InputMesh>::null_face());
-      face_at[index] = f;
-    }
-    const auto input_points = get(CGAL::vertex_point, input);
-    const std::size_t nb_locations = std::size_t(locations.size());
-    std::size_t i = 0;
-    for(auto w : vertices(output))
-    {
-      double error = std::numeric_limits<double>::infinity();
-      if(i < nb_locations)
-      {
-        const auto& location = locations[i];
-        const std::size_t f = std::size_t(location.input_face);
-        const double b[3] = {double(location.coordinates[0]), double(location.coordinates[1]),
-                             double(location.coordinates[2])};
-        // Barycentric: no coordinate below -1e-9 and a sum of 1 within 1e-9 (rounding only).
-        const bool barycentric = std::isfinite(b[0]) && std::isfinite(b[1]) && std::isfinite(b[2])
-                                 && (std::min)({b[0], b[1], b[2]}) >= -1e-9 && std::abs(b[0] + b[1] + b[2] - 1.) <= 1e-9;
-        if(f < face_at.size() && face_at[f] != boost::graph_traits<InputMesh>::null_face() && barycentric)
-        {
-          const input_halfedge_descriptor h = halfedge(face_at[f], input);
-          const typename Kernel::Point_3 p = point_of(get(input_points, source(h, input)));
-          const typename Kernel::Point_3 q = point_of(get(input_points, target(h, input)));
-          const typename Kernel::Point_3 r = point_of(get(input_points, target(next(h, input), input)));
-          // Relative to a corner, so that a mesh far from the origin loses no precision.
-          const typename Kernel::Point_3 x = p + b[1] * (q - p) + b[2] * (r - p);
-          const typename Kernel::Point_3 y = point_of(get(output_points, w));
-          if(is_finite(y))
-            error = std::sqrt(CGAL::to_double(CGAL::squared_distance(x, y)));
-        }
-      }
-      if(!(error <= v.tolerance))
-        ++v.vertices_off_location;
-      v.max_location_error = (std::max)(v.max_location_error, error);
-      ++i;
-    }
-    v.locations_match = v.vertices_off_location == 0 && nb_locations == v.output_vertices;
-  }
+    verification::check_self_intersections<Concurrency_tag>(v, output);
+  verification::check_topology(v, input_checks);
+  verification::check_distances_to_input<Kernel>(v, input, output, box);
+  verification::check_vertex_locations<Kernel>(v, input, output, np);
   return v;
 }
 
