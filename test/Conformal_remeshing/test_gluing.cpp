@@ -1,0 +1,253 @@
+// After gluing: flips and moves across the cuts between patches, on the glued soup.
+
+#include <CGAL/remesh_conformal.h>
+
+#include <CGAL/Conformal_remeshing/IO/read_mesh.h>
+#include <CGAL/Conformal_remeshing/check_mesh.h>
+#include <CGAL/Conformal_remeshing/mesh_quality.h>
+
+#include "cad_like_models.h"
+#include "remeshing_checks.h"
+#include "test_surfaces.h"
+#include "expect_error.h"
+
+#include <CGAL/AABB_face_graph_triangle_primitive.h>
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/Polygon_mesh_processing/stitch_borders.h>
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/generators.h>
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <functional>
+#include <iostream>
+#include <map>
+#include <memory>
+#include <numeric>
+#include <random>
+#include <set>
+#include <cmath>
+#include <string>
+#include <thread>
+#include <vector>
+
+namespace CR = CGAL::Conformal_remeshing;
+namespace bm = CGAL::Conformal_remeshing::benchmarks;
+typedef CGAL::Epick K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+using remeshing_checks::check_remeshing;
+using remeshing_checks::diagonal;
+using remeshing_checks::check_topology_and_fidelity;
+
+namespace RM = CR::internal::remeshing;
+
+TEST(FlipsAfterGluing, FlipAThinPairUnlessItsEdgeIsKeptOrTheQuadFolds)
+{
+  // (c, a, b) is a sliver (smallest angle 5.7 degrees) on the edge a-b; flipping a-b into c-d
+  // makes two good triangles.
+  typedef CGAL::Epick::Point_3 P;
+  typedef std::array<std::size_t, 3> T;
+  const std::size_t a = 0, b = 1, c = 2, d = 3;
+  std::vector<P> points{P(0, 0, 0), P(1, 0, 0), P(0.5, -0.05, 0), P(0.5, 0.8, 0.1)};
+  const std::vector<T> pair{T{{c, a, b}}, T{{d, b, a}}};
+  auto smallest_angle = [&](const std::vector<T>& triangles) {
+    double smallest = 180.;
+    for(const T& t : triangles)
+    {
+      const std::array<double, 3> angles = CR::triangle_quality(points[t[0]], points[t[1]], points[t[2]]).angles;
+      smallest = (std::min)(smallest, *std::min_element(angles.begin(), angles.end()));
+    }
+    return smallest;
+  };
+  auto no_edge_is_kept = [](std::size_t, std::size_t) { return false; };
+
+  std::vector<T> triangles = pair;
+  const RM::Soup_flips flips = RM::flip_small_angles_after_gluing(points, triangles, no_edge_is_kept, 30.);
+  EXPECT_EQ(flips.flips, 1u);
+  EXPECT_EQ(triangles, (std::vector<T>{T{{c, a, d}}, T{{c, d, b}}}));
+  EXPECT_LT(smallest_angle(pair), 6.);
+  EXPECT_GT(smallest_angle(triangles), 20.);
+  flips.undo(triangles);
+  EXPECT_EQ(triangles, pair);
+
+  // A kept edge (a feature's or a border's chord) stays.
+  triangles = pair;
+  auto ab_is_kept = [&](std::size_t i, std::size_t j) { return std::minmax(i, j) == std::minmax(a, b); };
+  EXPECT_EQ(RM::flip_small_angles_after_gluing(points, triangles, ab_is_kept, 30.).flips, 0u);
+  EXPECT_EQ(triangles, pair);
+
+  // A concave quad (c and d both beyond b): the flipped triangles would overlap, though their
+  // unsigned angles (28 degrees against 10.6) would be better. Refused.
+  points[c] = P(1.28, -0.24, 0);
+  points[d] = P(1.49, 0.51, 0);
+  triangles = pair;
+  EXPECT_EQ(RM::flip_small_angles_after_gluing(points, triangles, no_edge_is_kept, 30.).flips, 0u);
+  EXPECT_EQ(triangles, pair);
+
+  // A pair bent by 76 degrees whose flip would raise the smallest angle from 27.5 to 35.5 degrees
+  // but bend the new pair by 100: a sharper crease than the surface had. Refused.
+  points[c] = P(0.08, -0.57, 0);
+  points[d] = P(0.03, 0.12, -0.49);
+  triangles = pair;
+  EXPECT_EQ(RM::flip_small_angles_after_gluing(points, triangles, no_edge_is_kept, 30.).flips, 0u);
+  EXPECT_EQ(triangles, pair);
+}
+
+TEST(FlipsAfterGluing, ShapePassesFlipTheChosenEdgesOnly)
+{
+  // Two triangles with an angle of 118 degrees at c and d (skewness 0.48), none below 30: the
+  // angle passes leave them; the shape passes flip a-b into c-d (skewness 0.02) where asked.
+  typedef CGAL::Epick::Point_3 P;
+  typedef std::array<std::size_t, 3> T;
+  const std::size_t a = 0, b = 1, c = 2, d = 3;
+  const std::vector<P> points{P(0, 0, 0), P(1, 0, 0), P(0.5, -0.3, 0), P(0.5, 0.3, 0)};
+  const std::vector<T> pair{T{{c, a, b}}, T{{d, b, a}}};
+  auto no_edge_is_kept = [](std::size_t, std::size_t) { return false; };
+  auto every_edge = [](std::size_t, std::size_t) { return true; };
+  auto no_edge = [](std::size_t, std::size_t) { return false; };
+
+  std::vector<T> triangles = pair;
+  RM::Glued_soup_flipper angles_only(points, triangles, no_edge_is_kept, 30.);
+  angles_only.angle_passes();
+  EXPECT_EQ(angles_only.result().flips, 0u);
+  RM::Glued_soup_flipper not_chosen(points, triangles, no_edge_is_kept, 30.);
+  not_chosen.shape_passes(no_edge, 3);
+  EXPECT_EQ(not_chosen.result().flips, 0u);
+  EXPECT_EQ(triangles, pair);
+
+  RM::Glued_soup_flipper chosen(points, triangles, no_edge_is_kept, 30.);
+  chosen.shape_passes(every_edge, 3);
+  EXPECT_EQ(chosen.result().flips, 1u);
+  EXPECT_EQ(triangles, (std::vector<T>{T{{c, a, d}}, T{{c, d, b}}}));
+  EXPECT_LT(RM::Triangle_shape::skewness(points[c], points[a], points[d]), 0.05);
+  EXPECT_GT(RM::Triangle_shape::skewness(points[c], points[a], points[b]), 0.45);
+}
+
+TEST(MovesAfterGluing, AStarWithAnAngleBelowTheTargetHasItRaised)
+{
+  // A flat star of three triangles around point 0 inside the triangle (-1, -0.5), (1, -0.5),
+  // (0.6, 1), whose corner of 43.2 degrees is split in two: no place gives the star 30 degrees.
+  // Where the summed skewness is smallest (about (0, 0.036), found by a scan at 0.004), its
+  // smallest angle is 14.9 degrees; the largest smallest angle, 21.6 degrees, is at about
+  // (0.224, -0.016). Started at the first, the skewness moves stay; the angle moves go toward the second.
+  typedef CGAL::Epick::Point_3 P;
+  typedef std::array<std::size_t, 3> T;
+  CR::Poly_annulus_segmentation s;
+  std::vector<std::vector<CR::Poly_annulus_segmentation::Vertex> > grid(17);
+  for(int i = 0; i <= 16; ++i)
+    for(int j = 0; j <= 16; ++j)
+      grid[i].push_back(s.mesh.add_vertex(P(-2. + 0.25 * i, -2. + 0.25 * j, 0.)));
+  for(int i = 0; i < 16; ++i)
+    for(int j = 0; j < 16; ++j)
+    {
+      s.mesh.add_face(grid[i][j], grid[i + 1][j], grid[i + 1][j + 1]);
+      s.mesh.add_face(grid[i][j], grid[i + 1][j + 1], grid[i][j + 1]);
+    }
+  std::vector<P> points{P(0., 0.036, 0.), P(-1., -0.5, 0.), P(1., -0.5, 0.), P(0.6, 1., 0.)};
+  const std::vector<T> star{T{{0, 1, 2}}, T{{0, 2, 3}}, T{{0, 3, 1}}};
+  auto smallest_angle = [&](const P& x) {
+    double smallest = 180.;
+    for(const T& t : star)
+    {
+      const std::array<double, 3> a = CR::triangle_quality(x, points[t[1]], points[t[2]]).angles;
+      smallest = (std::min)({smallest, a[0], a[1], a[2]});
+    }
+    return smallest;
+  };
+  const double before = smallest_angle(points[0]);
+  ASSERT_NEAR(before, 14.95, 0.05);
+  std::vector<CR::Poly_annulus_segmentation::Face> point_face(points.size());
+  for(auto f : s.mesh.faces())
+  {
+    const auto h = s.mesh.halfedge(f);
+    if(CGAL::squared_distance(points[0], K::Triangle_3(s.mesh.point(s.mesh.source(h)), s.mesh.point(s.mesh.target(h)),
+                                                       s.mesh.point(s.mesh.target(s.mesh.next(h))))) == 0.)
+      point_face[0] = f;
+  }
+  const std::size_t moves = RM::move_points_after_gluing(s, points, point_face, star, {1, 0, 0, 0}, 30., 10., 5);
+  const double after = smallest_angle(points[0]);
+  std::cout << "smallest angle of the star: " << before << " -> " << after << " degrees (the best: 21.6) in " << moves
+            << " moves; the point at " << points[0] << std::endl;
+  EXPECT_GT(moves, 0u);
+  EXPECT_GT(after, 20.5);
+  EXPECT_LE(after, 21.6);
+  EXPECT_EQ(points[0].z(), 0.);
+}
+
+TEST(MovesAfterGluing, AStarRelaxesOnTheSurfaceButDoesNotCutACreaseOff)
+{
+  // A roof z = -slope |x| over [-2, 2]^2 (a crease along x = 0 when the slope is not 0) as the
+  // segmented surface, and on it a glued star: point 0, movable, with six neighbours around
+  // (shift, 0) at distance 1, two of them at (shift, +-1): on the crease when shift is 0.
+  typedef CGAL::Epick::Point_3 P;
+  typedef std::array<std::size_t, 3> T;
+  auto relax = [](double slope, double shift, double start_x, double start_y) {
+    CR::Poly_annulus_segmentation s;
+    const auto roof = [&](double x, double y) { return P(x, y, -slope * std::abs(x)); };
+    std::vector<std::vector<CR::Poly_annulus_segmentation::Vertex> > grid(17);
+    for(int i = 0; i <= 16; ++i)
+      for(int j = 0; j <= 16; ++j)
+        grid[i].push_back(s.mesh.add_vertex(roof(-2. + 0.25 * i, -2. + 0.25 * j)));
+    for(int i = 0; i < 16; ++i)
+      for(int j = 0; j < 16; ++j)
+      {
+        s.mesh.add_face(grid[i][j], grid[i + 1][j], grid[i + 1][j + 1]);
+        s.mesh.add_face(grid[i][j], grid[i + 1][j + 1], grid[i][j + 1]);
+      }
+    std::vector<P> points{roof(start_x, start_y)};
+    std::vector<T> star;
+    for(int k = 0; k < 6; ++k)
+    {
+      points.push_back(roof(shift + std::cos(CGAL_PI / 2. + k * CGAL_PI / 3.), std::sin(CGAL_PI / 2. + k * CGAL_PI / 3.)));
+      star.push_back(T{{0, std::size_t(1 + k), std::size_t(1 + (k + 1) % 6)}});
+    }
+    // The face under the start point, found by its distance.
+    std::vector<CR::Poly_annulus_segmentation::Face> point_face(points.size());
+    double nearest = 1e300;
+    for(auto f : s.mesh.faces())
+    {
+      const auto h = s.mesh.halfedge(f);
+      const double d = CGAL::squared_distance(points[0], K::Triangle_3(s.mesh.point(s.mesh.source(h)), s.mesh.point(s.mesh.target(h)),
+                                                                       s.mesh.point(s.mesh.target(s.mesh.next(h)))));
+      if(d < nearest)
+        nearest = d, point_face[0] = f;
+    }
+    const std::vector<char> movable{1, 0, 0, 0, 0, 0, 0};
+    const std::vector<P> before = points;
+    const std::size_t moves = RM::move_points_after_gluing(s, points, point_face, star, movable, 30., 1.4, 5);
+    // Only point 0 moved, onto the roof, and its face holds it.
+    EXPECT_TRUE(std::equal(points.begin() + 1, points.end(), before.begin() + 1));
+    EXPECT_NEAR(points[0].z(), -slope * std::abs(points[0].x()), 1e-12);
+    const auto h = s.mesh.halfedge(point_face[0]);
+    EXPECT_LT(CGAL::squared_distance(points[0], K::Triangle_3(s.mesh.point(s.mesh.source(h)), s.mesh.point(s.mesh.target(h)),
+                                                               s.mesh.point(s.mesh.target(s.mesh.next(h))))), 1e-24);
+    double skewness_before = 0., skewness_after = 0.;
+    for(const T& t : star)
+    {
+      skewness_before += RM::Triangle_shape::skewness(before[t[0]], before[t[1]], before[t[2]]);
+      skewness_after += RM::Triangle_shape::skewness(points[t[0]], points[t[1]], points[t[2]]);
+    }
+    EXPECT_LE(skewness_after, skewness_before);
+    EXPECT_EQ(moves > 0, skewness_after < skewness_before);
+    return points[0];
+  };
+  // Flat: from off the centre to the centre.
+  const P flat = relax(0., 0., 0.3, 0.2);
+  EXPECT_LT(std::hypot(flat.x(), flat.y()), 0.02) << flat;
+  // On the crease, around a centre on it: along the crease to near the centre (the star's edges
+  // to (0, +-1) follow the crease, and the point leaves it only a little).
+  const P along = relax(1., 0., 0., 0.3);
+  EXPECT_LT(std::abs(along.y()), 0.05) << along;
+  EXPECT_LT(std::abs(along.x()), 0.1) << along; // measured: 0.06 off the crease
+  // On the crease, around a centre 0.3 off it: flat, the point goes there; on the roof it may
+  // leave the crease only as far as the moved star stays within 0.05 mean edges of it.
+  const P off_flat = relax(0., 0.3, 0., 0.);
+  EXPECT_NEAR(off_flat.x(), 0.3, 0.02) << off_flat;
+  const P off_roof = relax(1., 0.3, 0., 0.);
+  EXPECT_LT(off_roof.x(), 0.1) << off_roof; // measured: 0.04
+}
