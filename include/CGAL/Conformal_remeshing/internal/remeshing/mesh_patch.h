@@ -261,62 +261,65 @@ private:
   mutable Size_field_hint last_hint_ = no_size_field_hint;
 };
 
-// Planar Delaunay refinement of a flattened patch with the shared boundary samples, then the
-// pull-back of the new points onto the surface through the flow's correspondence.
-// No edge joins the two samples of a pair in `diagonals_to_split` (sample indices, smaller first).
-// The optimization's vertex moves run in parallel with `moves_in_parallel`, with the same result.
-inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, const std::vector<double>& scale,
-                                             const Extracted_patch& patch,
-                                             const Curve_samples& samples, const Sizing& sizing, double min_angle,
-                                             const Planar_smoothing& smoothing, const Frontal_insertion& frontal,
-                                             int optimization_rounds,
-                                             const std::set<std::pair<std::size_t, std::size_t> >& diagonals_to_split = {},
-                                             bool moves_in_parallel = false)
+// The boundary loops of a patch as planar images of the shared samples, and the pairs of loop
+// positions that must not be joined (`diagonals_to_split`, in sample indices, mapped to every
+// position of each sample: a slit's samples are on two sides).
+struct Patch_loops
 {
-  typedef std::chrono::steady_clock Clock;
-  Clock::time_point start = Clock::now();
-  Remeshed_patch result;
-  const Planar_locator locator(flat.layout, flat.triangles);
-  const Planar_size_field planar_size(flat, scale, patch, sizing, locator);
   std::vector<std::vector<Boundary_sample> > loops;
-  loops.push_back(loop_samples(flat.outer_boundary, patch, samples, result.boundary_ids));
-  for(const auto& hole : flat.holes)
-    loops.push_back(loop_samples(hole, patch, samples, result.boundary_ids));
+  std::vector<std::size_t> boundary_ids; // the sample index of each loop position, in loop order
   std::vector<std::pair<std::size_t, std::size_t> > local_diagonals_to_split;
+  std::vector<Epick::Point_3> sample_points; // in loop order
+};
+
+inline Patch_loops patch_loops(const Conformal_flattening& flat, const Extracted_patch& patch, const Curve_samples& samples,
+                               const std::set<std::pair<std::size_t, std::size_t> >& diagonals_to_split)
+{
+  Patch_loops result;
+  result.loops.push_back(loop_samples(flat.outer_boundary, patch, samples, result.boundary_ids));
+  for(const auto& hole : flat.holes)
+    result.loops.push_back(loop_samples(hole, patch, samples, result.boundary_ids));
   if(!diagonals_to_split.empty())
   {
-    std::map<std::size_t, std::vector<std::size_t> > positions; // a slit's samples are on two sides
+    std::map<std::size_t, std::vector<std::size_t> > positions;
     for(std::size_t i = 0; i < result.boundary_ids.size(); ++i)
       positions[result.boundary_ids[i]].push_back(i);
     for(const auto& pair : diagonals_to_split)
       if(positions.count(pair.first) && positions.count(pair.second))
         for(std::size_t i : positions[pair.first])
           for(std::size_t j : positions[pair.second])
-            local_diagonals_to_split.emplace_back(i, j);
+            result.local_diagonals_to_split.emplace_back(i, j);
   }
-  // The tips of a coarse input are kept as vertices (see kept_input_vertices.h).
-  std::vector<Epick::Point_3> sample_points;
-  for(const auto& loop : loops)
+  for(const auto& loop : result.loops)
     for(const Boundary_sample& s : loop)
-      sample_points.push_back(s.point);
+      result.sample_points.push_back(s.point);
+  return result;
+}
+
+// The planar mesh of a patch: the tips of a coarse input kept as vertices (see
+// kept_input_vertices.h), the first rows of triangles along features, borders and user patch
+// borders seeded (see equilateral_seeds(); along cuts the points move after gluing instead, see
+// moves_after_gluing.h), and so is the first ring around each kept tip (see
+// seeds_around_points()); then frontal insertion and Delaunay refinement.
+inline Planar_mesh mesh_patch_in_plane(const Conformal_flattening& flat, const Extracted_patch& patch, const Curve_samples& samples,
+                                       const Sizing& sizing, const Planar_size_field& planar_size, const Patch_loops& loops,
+                                       double min_angle, const Planar_smoothing& smoothing, const Frontal_insertion& frontal,
+                                       Surface_map_with_hints& surface_map)
+{
   std::vector<Epick::Point_2> fixed_points;
   std::vector<std::pair<Epick::Point_2, Epick::Point_3> > tips;
-  for(std::size_t v : kept_input_vertices(patch, sizing.target(), kept_tip_tolerance, sample_points))
+  for(std::size_t v : kept_input_vertices(patch, sizing.target(), kept_tip_tolerance, loops.sample_points))
   {
     fixed_points.push_back(flat.uv[v]);
     tips.emplace_back(flat.uv[v], patch.mesh.point(Extracted_patch::Mesh::Vertex_index(Extracted_patch::Mesh::size_type(v))));
   }
-  // The first rows of triangles along features, borders and user patch borders are seeded (see
-  // equilateral_seeds()); along cuts the points move after gluing instead (moves_after_gluing.h).
-  // So is the first ring around each kept tip (see seeds_around_points()).
-  Surface_map_with_hints surface_map(flat, locator);
   const auto on_kept_curve = [&](const Boundary_sample& a, const Boundary_sample& b) { return samples.is_kept_chord(a.id, b.id); };
   const auto surface_point = [&](const Epick::Point_2& p, Epick::Point_3& x) {
     const Surface_map_with_hints::Lifted lifted = surface_map.lift(p);
     x = flat.surface_point(lifted.on_patch);
     return !lifted.clamped;
   };
-  std::vector<Planar_seed> seeds = equilateral_seeds(loops, on_kept_curve, surface_point, seed_layers);
+  std::vector<Planar_seed> seeds = equilateral_seeds(loops.loops, on_kept_curve, surface_point, seed_layers);
   Size_field_hint tip_hint = no_size_field_hint;
   const auto target_lengths = [&](const Epick::Point_2& p) {
     const std::pair<double, double> size = planar_size.size_and_scale(p, tip_hint);
@@ -324,78 +327,77 @@ inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, c
   };
   for(const Planar_seed& seed : seeds_around_points(tips, target_lengths, surface_point))
     seeds.push_back(seed);
-  Planar_mesh planar = mesh_planar_domain<Epick>(loops, (std::min)(min_angle, planar_refinement_angle_bound), planar_size,
-                                                 smoothing, false, local_diagonals_to_split, fixed_points, seeds, frontal);
-  if(planar.number_of_samples != result.boundary_ids.size())
-    throw Error(Error_code::NOT_AN_EMBEDDING, "remesh_conformal: the boundary samples of a patch overlap in the plane");
-  result.seconds_planar_meshing = std::chrono::duration<double>(Clock::now() - start).count();
-  result.phases.planar_refinement = planar.seconds_refinement;
-  result.phases.planar_smoothing = planar.seconds_smoothing;
-  result.phases.planar_setup = result.seconds_planar_meshing - planar.seconds_refinement - planar.seconds_smoothing;
-  result.chords_not_glued = check_glue(loops, planar, result.boundary_ids, samples).chords_not_glued;
-  if(!result.chords_not_glued.empty())
-    return result;
+  return mesh_planar_domain<Epick>(loops.loops, (std::min)(min_angle, planar_refinement_angle_bound), planar_size, smoothing, false,
+                                   loops.local_diagonals_to_split, fixed_points, seeds, frontal);
+}
 
-  // Flips and moves judged on the surface (see surface_optimization.h). The surface positions are
-  // the optimizer's working state only: the pull-back below finds the final points' input faces.
-  // The refinement numbers its points in the order it inserted them, worst triangle first: lifted
-  // in that order, each walk would start far from its point. (Sorted again for the pull-back: the
-  // optimization moves points and adds some.)
-  const auto interior_points_in_space_order = [&planar]() {
-    std::vector<std::size_t> order(planar.points.size() - planar.number_of_samples);
-    std::iota(order.begin(), order.end(), planar.number_of_samples);
-    const auto point_of_index = CGAL::make_property_map(planar.points);
-    CGAL::spatial_sort(order.begin(), order.end(), CGAL::Spatial_sort_traits_adapter_2<Epick, decltype(point_of_index)>(point_of_index));
-    return order;
+// The interior points of `planar` in spatial order. The refinement numbers its points in the
+// order it inserted them, worst triangle first: lifted in that order, each walk would start far
+// from its point.
+inline std::vector<std::size_t> interior_points_in_space_order(const Planar_mesh& planar)
+{
+  std::vector<std::size_t> order(planar.points.size() - planar.number_of_samples);
+  std::iota(order.begin(), order.end(), planar.number_of_samples);
+  const auto point_of_index = CGAL::make_property_map(planar.points);
+  CGAL::spatial_sort(order.begin(), order.end(), CGAL::Spatial_sort_traits_adapter_2<Epick, decltype(point_of_index)>(point_of_index));
+  return order;
+}
+
+// Flips and moves judged on the surface (see surface_optimization.h). The surface positions are
+// the optimizer's working state only: the pull-back finds the final points' input faces.
+inline Surface_optimization_report optimize_patch_on_surface(const Conformal_flattening& flat, const Planar_locator& locator,
+                                                             Surface_map_with_hints& surface_map, const Sizing& sizing,
+                                                             const Patch_loops& loops, double min_angle, int optimization_rounds,
+                                                             const std::set<std::pair<std::size_t, std::size_t> >& diagonals_to_split,
+                                                             bool moves_in_parallel, Planar_mesh& planar)
+{
+  // No state but the hint, which each vertex keeps (see Surface_mesh_optimizer): the moves of a
+  // pass may call it from several threads at once.
+  const auto lift = [&](const Epick::Point_2& p, std::size_t& hint) {
+    const Planar_locator::Location l = locator.locate(p, hint);
+    return flat.surface_point(l.triangle, l.coordinates);
   };
-  start = Clock::now();
-  if(optimization_rounds > 0)
+  std::vector<Epick::Point_3> positions(loops.sample_points); // the samples, in loop order, first
+  positions.resize(planar.points.size());
+  std::vector<std::size_t> hints(planar.points.size(), Planar_locator::no_hint); // where each was found
+  for(std::size_t i : interior_points_in_space_order(planar))
   {
-    // No state but the hint, which each vertex keeps (see Surface_mesh_optimizer): the moves of
-    // a pass may call it from several threads at once.
-    const auto lift = [&](const Epick::Point_2& p, std::size_t& hint) {
-      const Planar_locator::Location l = locator.locate(p, hint);
-      return flat.surface_point(l.triangle, l.coordinates);
-    };
-    std::vector<Epick::Point_3> positions(sample_points); // the samples, in loop order, first
-    positions.resize(planar.points.size());
-    std::vector<std::size_t> hints(planar.points.size(), Planar_locator::no_hint); // where each was found
-    for(std::size_t i : interior_points_in_space_order())
-    {
-      const Surface_map_with_hints::Lifted lifted = surface_map.lift(planar.points[i]);
-      positions[i] = flat.surface_point(lifted.on_patch);
-      hints[i] = lifted.triangle;
-    }
-    Edge_split_bounds split_bounds;
-    split_bounds.longest = split_edge_factor * sizing.target();
-    split_bounds.across_bend = {shortest_off_surface_split_factor * sizing.target(), off_surface_split_factor * sizing.target()};
-    split_bounds.tight_curve = {shortest_tight_curve_split_factor * sizing.target(), tight_curve_split_factor * sizing.target()};
-    result.optimization =
-      optimize_on_surface(planar.points, positions, planar.triangles, planar.number_of_fixed_points, lift, min_angle,
-                          longest_edge_factor * sizing.target(), split_bounds, optimization_rounds,
-                          result.boundary_ids, diagonals_to_split, moves_in_parallel,
-                          sizing.is_uniform() ? collapse_edge_factor * sizing.target() : 0., hints);
+    const Surface_map_with_hints::Lifted lifted = surface_map.lift(planar.points[i]);
+    positions[i] = flat.surface_point(lifted.on_patch);
+    hints[i] = lifted.triangle;
   }
-  result.seconds_optimization = std::chrono::duration<double>(Clock::now() - start).count();
-  {
-    const Surface_optimization_report& o = result.optimization;
-    Meshing_phase_seconds& phases = result.phases;
-    phases.first_rounds = o.seconds_first_rounds;
-    phases.splits = o.seconds_splits;
-    phases.collapses = o.seconds_collapses;
-    phases.skewness_passes = o.seconds_skewness_passes;
-    phases.angle_passes = o.seconds_angle_passes;
-    phases.optimization_setup = result.seconds_optimization - (phases.first_rounds + phases.splits + phases.collapses
-                                                               + phases.skewness_passes + phases.angle_passes);
-  }
-  // The optimizer keeps every chord (it never flips a boundary edge) and makes none of the
-  // diagonals to split, but it may have made or removed others.
-  result.sample_diagonals = check_glue(loops, planar, result.boundary_ids, samples).sample_diagonals;
+  const double h = sizing.target();
+  Edge_split_bounds split_bounds;
+  split_bounds.longest = split_edge_factor * h;
+  split_bounds.across_bend = {shortest_off_surface_split_factor * h, off_surface_split_factor * h};
+  split_bounds.tight_curve = {shortest_tight_curve_split_factor * h, tight_curve_split_factor * h};
+  return optimize_on_surface(planar.points, positions, planar.triangles, planar.number_of_fixed_points, lift, min_angle,
+                             longest_edge_factor * h, split_bounds, optimization_rounds, loops.boundary_ids, diagonals_to_split,
+                             moves_in_parallel, sizing.is_uniform() ? collapse_edge_factor * h : 0., hints);
+}
 
-  start = Clock::now();
+inline void record_optimization_phases(Remeshed_patch& result)
+{
+  const Surface_optimization_report& o = result.optimization;
+  Meshing_phase_seconds& phases = result.phases;
+  phases.first_rounds = o.seconds_first_rounds;
+  phases.splits = o.seconds_splits;
+  phases.collapses = o.seconds_collapses;
+  phases.skewness_passes = o.seconds_skewness_passes;
+  phases.angle_passes = o.seconds_angle_passes;
+  phases.optimization_setup = result.seconds_optimization - (phases.first_rounds + phases.splits + phases.collapses
+                                                             + phases.skewness_passes + phases.angle_passes);
+}
+
+// The interior points of `planar` pulled back onto the surface (sorted again: the optimization
+// moves points and adds some), and the triangles numbered as the glue wants them: the samples by
+// their index in `samples`, then the interior points.
+inline void pull_back(const Conformal_flattening& flat, const Extracted_patch& patch, const Curve_samples& samples,
+                      Surface_map_with_hints& surface_map, const Planar_mesh& planar, Remeshed_patch& result)
+{
   result.interior_points.resize(planar.points.size() - planar.number_of_samples);
   result.interior_faces.resize(result.interior_points.size());
-  for(std::size_t i : interior_points_in_space_order())
+  for(std::size_t i : interior_points_in_space_order(planar))
   {
     const Surface_map_with_hints::Lifted lifted = surface_map.lift(planar.points[i]);
     const Domain_point q = flat.to_surface(lifted.on_patch);
@@ -411,9 +413,59 @@ inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, c
                                                                   : samples.points.size() + (t[c] - planar.number_of_samples);
     result.triangles.push_back(corners);
   }
-  result.seconds_pull_back = std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+// One patch meshed: planar meshing of its flattening on the shared boundary samples, the
+// optimization on the surface, and the pull-back of the new points onto the surface through the
+// flow's correspondence. No edge joins the two samples of a pair in `diagonals_to_split` (sample
+// indices, smaller first). The optimization's vertex moves run in parallel with
+// `moves_in_parallel`, with the same result. Where chords would not glue (`chords_not_glued`),
+// the result stops after the planar meshing.
+inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, const std::vector<double>& scale,
+                                             const Extracted_patch& patch,
+                                             const Curve_samples& samples, const Sizing& sizing, double min_angle,
+                                             const Planar_smoothing& smoothing, const Frontal_insertion& frontal,
+                                             int optimization_rounds,
+                                             const std::set<std::pair<std::size_t, std::size_t> >& diagonals_to_split = {},
+                                             bool moves_in_parallel = false)
+{
+  typedef std::chrono::steady_clock Clock;
+  const auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
+  Clock::time_point start = Clock::now();
+  Remeshed_patch result;
+  const Planar_locator locator(flat.layout, flat.triangles);
+  const Planar_size_field planar_size(flat, scale, patch, sizing, locator);
+  const Patch_loops loops = patch_loops(flat, patch, samples, diagonals_to_split);
+  result.boundary_ids = loops.boundary_ids;
+  Surface_map_with_hints surface_map(flat, locator);
+  Planar_mesh planar =
+    mesh_patch_in_plane(flat, patch, samples, sizing, planar_size, loops, min_angle, smoothing, frontal, surface_map);
+  if(planar.number_of_samples != result.boundary_ids.size())
+    throw Error(Error_code::NOT_AN_EMBEDDING, "remesh_conformal: the boundary samples of a patch overlap in the plane");
+  result.seconds_planar_meshing = seconds_since(start);
+  result.phases.planar_refinement = planar.seconds_refinement;
+  result.phases.planar_smoothing = planar.seconds_smoothing;
+  result.phases.planar_setup = result.seconds_planar_meshing - planar.seconds_refinement - planar.seconds_smoothing;
+  result.chords_not_glued = check_glue(loops.loops, planar, result.boundary_ids, samples).chords_not_glued;
+  if(!result.chords_not_glued.empty())
+    return result;
+
+  start = Clock::now();
+  if(optimization_rounds > 0)
+    result.optimization = optimize_patch_on_surface(flat, locator, surface_map, sizing, loops, min_angle, optimization_rounds,
+                                                    diagonals_to_split, moves_in_parallel, planar);
+  result.seconds_optimization = seconds_since(start);
+  record_optimization_phases(result);
+  // The optimizer keeps every chord (it never flips a boundary edge) and makes none of the
+  // diagonals to split, but it may have made or removed others.
+  result.sample_diagonals = check_glue(loops.loops, planar, result.boundary_ids, samples).sample_diagonals;
+
+  start = Clock::now();
+  pull_back(flat, patch, samples, surface_map, planar, result);
+  result.seconds_pull_back = seconds_since(start);
   return result;
 }
+
 } // namespace remeshing
 } // namespace internal
 } // namespace Conformal_remeshing
