@@ -395,6 +395,7 @@ int main(int argc, char** argv)
           .field("optimization_chord_splits", statistics.optimization_chord_splits)
           .field("optimization_collapses", statistics.optimization_collapses).field("flips_after_gluing", statistics.flips_after_gluing)
           .field("moves_after_gluing", statistics.moves_after_gluing)
+          .field("patch_jobs_run", statistics.patch_jobs_run).field("patch_jobs_kept", statistics.patch_jobs_kept)
           .field("self_intersection_refinements", report.self_intersection_refinements);
       json.key("input_quality");
       tools::write_json(json, before);

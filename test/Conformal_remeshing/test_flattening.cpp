@@ -509,7 +509,7 @@ TEST(ConformalFlatten, LongEdgesAreSplitToTheSurfacesAreaNotToItsFans)
   const double length = std::sqrt(area / 2000.);
   const CR::Conformal_flattening f = CR::conformal_flatten(mesh, CR::parameters::maximum_edge_length(length));
   expect_embedding(f, 10);
-  const std::size_t added = f.report.edge_splits + f.patch.points.size() - num_vertices(mesh);
+  const std::size_t added = f.report.edge_splits + f.number_of_patch_points() - num_vertices(mesh);
   EXPECT_GT(added, std::size_t(1000));
   EXPECT_LT(added, std::size_t(4 * 2000)) << "over-refined: " << f.report.edge_splits << " splits";
 }
@@ -602,15 +602,15 @@ TEST(ConformalFlatten, FlatFansAreRetriangulatedAndPointsLocatedInTheirInputFace
     expect_embedding(f, 0);
     if(developable)
     {
-      ASSERT_EQ(f.patch.flat_regions.size(), std::size_t(1));
-      EXPECT_TRUE(f.patch.flat_regions.front().developed);
+      ASSERT_EQ(CR::internal::flattening::Patch_access::of(f).flat_regions.size(), std::size_t(1));
+      EXPECT_TRUE(CR::internal::flattening::Patch_access::of(f).flat_regions.front().developed);
       EXPECT_EQ(f.report.retriangulated_faces, num_faces(mesh));
       // The new edges have their lengths in the unfolding, so the region stays flat: the
       // angles at every inner vertex of the new triangulation add up to 2 pi (with the chords
       // across the bend, they would not: the patch's vertices are on the cylinder, off its
       // unfolding's straight lines).
-      CR::Intrinsic_triangulation<double> developed = intrinsic_triangulation_of(f.patch, true),
-                                          chords = intrinsic_triangulation_of(f.patch, false);
+      CR::Intrinsic_triangulation<double> developed = intrinsic_triangulation_of(CR::internal::flattening::Patch_access::of(f), true),
+                                          chords = intrinsic_triangulation_of(CR::internal::flattening::Patch_access::of(f), false);
       const std::vector<double> curvature = developed.vertex_curvatures(), chord_curvature = chords.vertex_curvatures();
       double largest_deficit = 0., largest_chord_deficit = 0.;
       std::size_t inner = 0;

@@ -314,21 +314,32 @@ TEST(Sizing, AUserFieldSetsTheLengthWhereItIsSmaller)
 
 TEST(Sizing, ShorterNearThePlacesToMeshAgain)
 {
-  // The field for meshing again where an output intersected itself: the given size at the
-  // places, growing by half the distance to the nearest, never above the user's field.
+  // The bound for meshing again where an output intersected itself: the given size at the
+  // places, growing by half the distance to the nearest, never above the user's field; a patch
+  // keeps only the places whose bound reaches it.
   namespace RM = CR::internal::remeshing;
-  std::vector<K::Point_3> places;
-  RM::add_if_far(places, K::Point_3(0., 0., 0.), 0.25);
-  RM::add_if_far(places, K::Point_3(0.2, 0., 0.), 0.25); // within a quarter: the same place
-  RM::add_if_far(places, K::Point_3(4., 0., 0.), 0.25);
-  ASSERT_EQ(places.size(), 2u);
+  RM::Local_refinement near;
+  RM::add_if_far(near.points, K::Point_3(0., 0., 0.), 0.25);
+  RM::add_if_far(near.points, K::Point_3(0.2, 0., 0.), 0.25); // within a quarter: the same place
+  RM::add_if_far(near.points, K::Point_3(4., 0., 0.), 0.25);
+  ASSERT_EQ(near.points.size(), 2u);
+  near.size = 0.5;
   const RM::Sizing::Field none, user = [](const K::Point_3& p) { return p.y() > 0. ? 0.1 : 10.; };
-  const RM::Sizing::Field near = RM::shorter_near(none, places, 0.5), both = RM::shorter_near(user, places, 0.5);
-  EXPECT_DOUBLE_EQ(near(K::Point_3(0., 0., 0.)), 0.5);
-  EXPECT_DOUBLE_EQ(near(K::Point_3(4., 0., 1.)), 1.);   // 0.5 + 0.5 * 1 from the second place
-  EXPECT_DOUBLE_EQ(near(K::Point_3(2., 0., 0.)), 1.5);  // halfway: 2 from both
-  EXPECT_DOUBLE_EQ(both(K::Point_3(2., 1., 0.)), 0.1);  // the user's field where it is smaller
-  EXPECT_NEAR(both(K::Point_3(2., -1., 0.)), 0.5 + 0.5 * std::sqrt(5.), 1e-12);
+  EXPECT_DOUBLE_EQ(RM::field_size(none, near, K::Point_3(0., 0., 0.)), 0.5);
+  EXPECT_DOUBLE_EQ(RM::field_size(none, near, K::Point_3(4., 0., 1.)), 1.);  // 0.5 + 0.5 * 1 from the second place
+  EXPECT_DOUBLE_EQ(RM::field_size(none, near, K::Point_3(2., 0., 0.)), 1.5); // halfway: 2 from both
+  EXPECT_DOUBLE_EQ(RM::field_size(user, near, K::Point_3(2., 1., 0.)), 0.1); // the user's field where it is smaller
+  EXPECT_NEAR(RM::field_size(user, near, K::Point_3(2., -1., 0.)), 0.5 + 0.5 * std::sqrt(5.), 1e-12);
+  EXPECT_TRUE(std::isinf(RM::field_size(none, RM::Local_refinement(), K::Point_3(0., 0., 0.))));
+
+  const CGAL::Bbox_3 box(3., -1., -1., 5., 1., 1.); // around the second place, 3 from the first
+  const RM::Local_refinement reaching = near.within(box, 1.5);
+  ASSERT_EQ(reaching.points.size(), 1u); // the first: 0.5 + 0.5 * 3 = 2 >= 1.5 everywhere in the box
+  EXPECT_EQ(reaching.points.front(), K::Point_3(4., 0., 0.));
+  EXPECT_EQ(near.within(box, 2.1).points.size(), 2u);
+  EXPECT_TRUE(near.within(CGAL::Bbox_3(10., 10., 10., 11., 11., 11.), 1.).empty());
+  EXPECT_TRUE(near == near);
+  EXPECT_FALSE(near == reaching);
 }
 
 

@@ -181,10 +181,10 @@ TEST(RemeshAnyTopology, WhereTheOutputIntersectsItselfItIsMeshedAgainFiner)
 {
   // The CAD sheet of the remeshing benchmark with the default 60-degree features: bending its
   // sliver fans makes false features that cut it into many small patches, and the glued patches
-  // intersect each other there at the target length (refused before 2026-11-26). An output never
-  // intersects itself (exact predicates) where the input does not: those places are meshed again
-  // with shorter edges. (The false features' corners keep their tiny input angles, so the
-  // quality bars do not apply.)
+  // intersect each other there at the target length. An output never intersects itself (exact
+  // predicates) where the input does not: those places are meshed again with shorter edges, and
+  // only the patches there run their jobs again. (The false features' corners keep their tiny
+  // input angles, so the quality bars do not apply.)
   Mesh sheet;
   bm::Perforated_plate_parameters p;
   p.number_of_random_holes = 10;
@@ -193,9 +193,16 @@ TEST(RemeshAnyTopology, WhereTheOutputIntersectsItselfItIsMeshedAgainFiner)
   Mesh output;
   std::vector<CR::Surface_location> locations;
   std::vector<std::string> stages;
+  CR::Remeshing_statistics statistics;
   const CR::Remeshing_report report = CR::remesh_conformal(
-    sheet, output, CR::parameters::vertex_locations(std::ref(locations), CR::parameters::progress([&](const std::string& stage) { stages.push_back(stage); })));
+    sheet, output,
+    CR::parameters::vertex_locations(std::ref(locations),
+                                     CR::parameters::statistics(std::ref(statistics),
+                                                                CR::parameters::progress([&](const std::string& stage) { stages.push_back(stage); }))));
   EXPECT_GE(report.self_intersection_refinements, 1u);
+  // Each round of meshing again keeps the meshes of the patches away from the crossings.
+  EXPECT_GT(statistics.patch_jobs_kept, 0u);
+  EXPECT_LT(statistics.patch_jobs_run, (report.self_intersection_refinements + 1) * report.number_of_patches);
   EXPECT_TRUE(std::any_of(stages.begin(), stages.end(), [](const std::string& s) {
     return s.find("the output intersects itself") != std::string::npos && s.find("meshing again with edges of 1/2") != std::string::npos;
   }));
@@ -646,26 +653,26 @@ TEST(ThinPatches, CurvesOfChordsThatCannotGlueAreSampledMoreDensely)
 
   // A loop whose chords (2, 3) and (3, 4) cross chord (0, 1) in the plane, as a patch thinner than
   // the sample spacing makes: the planar mesh cannot follow them, and they are reported.
-  R::Curve_samples samples;
-  std::vector<std::vector<R::Boundary_sample> > loops(1);
+  R::Patch_boundary boundary;
+  std::vector<std::vector<R::Boundary_sample> >& loops = boundary.loops;
+  loops.resize(1);
   const std::vector<std::pair<double, double> > crossing{{0., 0.}, {4., 0.}, {4., 1.}, {2., -0.5}, {0., 1.}};
-  std::vector<std::size_t> ids;
   for(std::size_t i = 0; i < crossing.size(); ++i)
   {
     loops[0].push_back(R::Boundary_sample{CGAL::Epick::Point_2(crossing[i].first, crossing[i].second), CGAL::Epick::Point_3(0., 0., 0.)});
-    ids.push_back(i);
-    samples.curve_of_chord[std::minmax(i, (i + 1) % crossing.size())] = 0;
+    boundary.sample_ids.push_back(i);
+    boundary.chords[std::minmax(i, (i + 1) % crossing.size())] = false;
   }
   const auto no_size_bound = [](const CGAL::Epick::Point_2&) { return 100.; };
   const R::Planar_mesh planar = R::mesh_planar_domain<CGAL::Epick>(loops, 20., no_size_bound, 0, false);
-  const auto not_glued = R::check_glue(loops, planar, ids, samples).chords_not_glued;
+  const auto not_glued = R::check_glue(boundary, planar).chords_not_glued;
   for(const std::pair<std::size_t, std::size_t> chord : {std::make_pair(0, 1), std::make_pair(2, 3), std::make_pair(3, 4)})
     EXPECT_NE(std::find(not_glued.begin(), not_glued.end(), chord), not_glued.end()) << chord.first << "-" << chord.second;
 
   // A simple polygon is glued everywhere.
   loops[0][3].uv = CGAL::Epick::Point_2(2., 0.5);
   const R::Planar_mesh simple = R::mesh_planar_domain<CGAL::Epick>(loops, 20., no_size_bound, 0, false);
-  EXPECT_TRUE(R::check_glue(loops, simple, ids, samples).chords_not_glued.empty());
+  EXPECT_TRUE(R::check_glue(boundary, simple).chords_not_glued.empty());
 }
 
 TEST(BoundarySamples, BordersThatBendAreSampledCloserButNotUnderFourFifthsOfTheSpacing)
@@ -715,19 +722,19 @@ TEST(ThinPatches, DiagonalsBetweenSamplesCanBeSplit)
   // A long thin hexagon, no size bound: the triangulation of its samples joins samples across it
   // (diagonals, which two patches along a short straight curve can share: four triangles on one
   // edge). Asked to, the mesher splits them, and no edge between two samples is left but the chords.
-  std::vector<std::vector<R::Boundary_sample> > loops(1);
+  R::Patch_boundary boundary;
+  std::vector<std::vector<R::Boundary_sample> >& loops = boundary.loops;
+  loops.resize(1);
   const std::vector<std::pair<double, double> > hexagon{{0., 0.}, {3., -0.2}, {6., 0.}, {6., 1.}, {3., 1.2}, {0., 1.}};
-  R::Curve_samples samples;
-  std::vector<std::size_t> ids;
   for(std::size_t i = 0; i < hexagon.size(); ++i)
   {
     loops[0].push_back(R::Boundary_sample{CGAL::Epick::Point_2(hexagon[i].first, hexagon[i].second), CGAL::Epick::Point_3(0., 0., 0.)});
-    ids.push_back(10 + i); // sample indices need not be loop positions
-    samples.curve_of_chord[std::minmax(10 + i, 10 + (i + 1) % hexagon.size())] = 0;
+    boundary.sample_ids.push_back(10 + i); // sample indices need not be loop positions
+    boundary.chords[std::minmax(10 + i, 10 + (i + 1) % hexagon.size())] = false;
   }
   const auto no_size_bound = [](const CGAL::Epick::Point_2&) { return 100.; };
   const R::Planar_mesh plain = R::mesh_planar_domain<CGAL::Epick>(loops, 0., no_size_bound, 0, false);
-  const R::Glue_check before = R::check_glue(loops, plain, ids, samples);
+  const R::Glue_check before = R::check_glue(boundary, plain);
   EXPECT_TRUE(before.chords_not_glued.empty());
   ASSERT_FALSE(before.sample_diagonals.empty());
 
@@ -735,7 +742,7 @@ TEST(ThinPatches, DiagonalsBetweenSamplesCanBeSplit)
   for(const auto& d : before.sample_diagonals)
     positions.emplace_back(d.first - 10, d.second - 10);
   const R::Planar_mesh split = R::mesh_planar_domain<CGAL::Epick>(loops, 0., no_size_bound, 0, false, positions);
-  const R::Glue_check after = R::check_glue(loops, split, ids, samples);
+  const R::Glue_check after = R::check_glue(boundary, split);
   EXPECT_TRUE(after.chords_not_glued.empty());
   EXPECT_TRUE(after.sample_diagonals.empty());
   EXPECT_GT(split.points.size(), plain.points.size());

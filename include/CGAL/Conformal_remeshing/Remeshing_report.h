@@ -114,6 +114,10 @@ struct Remeshing_statistics
   double max_scale_ratio = 0.; ///< the largest ratio of the local scales in a patch
   std::size_t boundary_curves = 0;
   std::size_t boundary_samples = 0;
+  /// patch jobs run (each meshes one patch on its boundary samples), and jobs that took the
+  /// result of an equal job run before instead (a patch whose boundary and sizes did not change
+  /// when other curves were sampled again, or that no self-intersection touched)
+  std::size_t patch_jobs_run = 0, patch_jobs_kept = 0;
   /// output vertices whose planar position fell outside the flat patch (between a boundary
   /// chord and the boundary polyline) and were clamped onto the nearest patch triangle
   std::size_t clamped_vertices = 0;

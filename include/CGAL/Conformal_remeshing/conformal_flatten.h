@@ -110,6 +110,12 @@ enum class Welded_region : unsigned char
 /// \ingroup PkgConformalRemeshingRef
 /// The result of `conformal_flatten()`: the planar position of every input vertex, the planar
 /// domain with the surface points of its boundary, and the map from the plane to the surface.
+namespace internal {
+namespace flattening {
+struct Patch_access;
+} // namespace flattening
+} // namespace internal
+
 struct Conformal_flattening
 {
   /// the planar position of input vertex `i` (by the vertex index map)
@@ -150,7 +156,7 @@ struct Conformal_flattening
     Domain_point p;
     p.uv = Epick::Point_2(0., 0.);
     p.point = surface_point(l);
-    const auto location = patch.input_location(l.first, l.second);
+    const auto location = patch_.input_location(l.first, l.second);
     p.input_face = std::size_t(location.first);
     p.input_coordinates = location.second;
     return p;
@@ -160,7 +166,7 @@ struct Conformal_flattening
   /// takes a walk in a retriangulated flat region; a developed one takes it for the point too).
   Epick::Point_3 surface_point(const Patch_location& l) const
   {
-    const internal::welding::Vec3 x = patch.point_in_face(l.first, l.second);
+    const internal::welding::Vec3 x = patch_.point_in_face(l.first, l.second);
     return Epick::Point_3(x[0], x[1], x[2]);
   }
 
@@ -188,25 +194,40 @@ struct Conformal_flattening
     return to_surface(t, b);
   }
 
-  /// the final intrinsic triangulation of the welded disc and the (refined) patch it started from
+  /// the final intrinsic triangulation of the welded disc
   Intrinsic_triangulation<double> triangulation;
-  internal::welding::Indexed_patch patch;
   /// the faces of the welded disc before the flow (the patch's faces first)
   std::vector<std::array<int, 3> > welded_faces;
   /// the patch faces around each patch vertex `v`: `faces_of_vertex[faces_of_vertex_start[v] ..
   /// faces_of_vertex_start[v + 1])`
   std::vector<int> faces_of_vertex_start, faces_of_vertex;
 
+  /// The number of points of the patch the flow started from: the input vertices (by the vertex
+  /// index map), then the points that split its boundary edges.
+  std::size_t number_of_patch_points() const { return patch_.points.size(); }
+
+  /// Point `i` of the patch the flow started from.
+  Epick::Point_3 patch_point(std::size_t i) const
+  {
+    const internal::welding::Vec3& x = patch_.points[i];
+    return Epick::Point_3(x[0], x[1], x[2]);
+  }
+
 private:
+  friend struct internal::flattening::Patch_access;
+  // The patch the flow started from: a copy of the input patch as indices, with its boundary
+  // edges split and its flat regions retriangulated (see weld.h).
+  internal::welding::Indexed_patch patch_;
+
   // A location in a face of the welded disc, as a location in a patch face. A point of the patch
   // that lies on a seam (a boundary or hole loop) may come back from the correspondence in the
   // annulus or hole fill beside it, with weight only on seam vertices: it is moved across.
   std::pair<int, std::array<double, 3> > patch_location(int face, std::array<double, 3> b) const
   {
-    if(face < int(patch.faces.size()))
+    if(face < int(patch_.faces.size()))
       return {face, b};
     const std::array<int, 3>& corners = welded_faces[face];
-    const int patch_vertices = int(patch.points.size());
+    const int patch_vertices = int(patch_.points.size());
     double kept = 0.;
     for(int c = 0; c < 3; ++c)
     {
@@ -228,7 +249,7 @@ private:
       const int f = faces_of_vertex[k];
       int shared = 0;
       for(int c = 0; c < 3; ++c)
-        shared += (b[c] > 0. && std::find(patch.faces[f].begin(), patch.faces[f].end(), corners[c]) != patch.faces[f].end());
+        shared += (b[c] > 0. && std::find(patch_.faces[f].begin(), patch_.faces[f].end(), corners[c]) != patch_.faces[f].end());
       if(shared > best_shared)
       {
         best_shared = shared;
@@ -242,7 +263,7 @@ private:
     double matched = 0.;
     for(int c = 0; c < 3; ++c)
       for(int d = 0; d < 3; ++d)
-        if(patch.faces[best_face][d] == corners[c])
+        if(patch_.faces[best_face][d] == corners[c])
         {
           result[d] += b[c];
           matched += b[c];
@@ -405,6 +426,13 @@ inline bool split_long_patch_edges(Intrinsic_triangulation<double>& tri, std::si
 
 namespace flattening {
 
+/// The flattening steps' access to the patch a flattening starts from.
+struct Patch_access
+{
+  static welding::Indexed_patch& of(Conformal_flattening& f) { return f.patch_; }
+  static const welding::Indexed_patch& of(const Conformal_flattening& f) { return f.patch_; }
+};
+
 // The state the steps of `conformal_flatten()` share, besides the result they fill.
 struct Flattening_state
 {
@@ -519,7 +547,7 @@ inline void prepare_patch(welding::Indexed_patch& patch, const Flattening_state&
 // The patch faces around each patch vertex (`Conformal_flattening::faces_of_vertex`).
 inline void index_faces_of_vertices(Conformal_flattening& result)
 {
-  const welding::Indexed_patch& patch = result.patch;
+  const welding::Indexed_patch& patch = Patch_access::of(result);
   result.faces_of_vertex_start.assign(patch.points.size() + 1, 0);
   for(const auto& f : patch.faces)
     for(int v : f)
@@ -539,7 +567,7 @@ inline void index_faces_of_vertices(Conformal_flattening& result)
 // seams (welded and hole loops) are never flipped.
 inline void weld_patch(Conformal_flattening& result, Flattening_state& state, double inner_radius)
 {
-  const welding::Indexed_patch& patch = result.patch;
+  const welding::Indexed_patch& patch = Patch_access::of(result);
   Flattening_report& report = result.report;
   state.disc = state.planar ? internal::welding::unwelded_disc(patch)
                             : internal::welding::weld(patch, state.welded, inner_radius, state.maximum_length / 1.5);
@@ -567,7 +595,7 @@ inline void refine_patch_region(Conformal_flattening& result, Flattening_state& 
   Intrinsic_triangulation<double>& tri = result.triangulation;
   const welding::Welded_disc& disc = state.disc;
   const double maximum_length = state.maximum_length;
-  const std::size_t split_limit = (std::max)(std::size_t(1000000), 20 * result.patch.points.size());
+  const std::size_t split_limit = (std::max)(std::size_t(1000000), 20 * Patch_access::of(result).points.size());
   if(maximum_length > 0. && !state.planar &&
      !internal::split_long_patch_edges(tri, disc.patch_faces, disc.scale * maximum_length, split_limit,
                                        result.report.edge_splits))
@@ -686,7 +714,7 @@ inline void find_welded_regions(Conformal_flattening& result, Flattening_state& 
 inline void lay_out(Conformal_flattening& result, const Flattening_state& state, const Time_limit& time_limit)
 {
   const Intrinsic_triangulation<double>& tri = result.triangulation;
-  const welding::Indexed_patch& patch = result.patch;
+  const welding::Indexed_patch& patch = Patch_access::of(result);
   const std::vector<char>& in_patch = state.in_patch;
   const std::vector<Intrinsic_triangulation<double>::Point_2> positions =
     state.planar ? internal::welding::planar_coordinates(patch) : tri.layout();
@@ -709,7 +737,7 @@ inline void lay_out(Conformal_flattening& result, const Flattening_state& state,
 inline int outer_loop_marker(const Conformal_flattening& result, const Flattening_state& state,
                              const std::vector<std::vector<int> >& loops)
 {
-  int outer_marker = result.patch.boundary_loops[state.welded].front();
+  int outer_marker = Patch_access::of(result).boundary_loops[state.welded].front();
   if(state.planar)
   {
     double largest = -std::numeric_limits<double>::infinity();
@@ -736,7 +764,7 @@ inline int outer_loop_marker(const Conformal_flattening& result, const Flattenin
 inline void make_domain_boundary(Conformal_flattening& result, Flattening_state& state)
 {
   const Intrinsic_triangulation<double>& tri = result.triangulation;
-  const welding::Indexed_patch& patch = result.patch;
+  const welding::Indexed_patch& patch = Patch_access::of(result);
   std::vector<std::vector<int> >& loops = state.loops;
   loops = internal::region_boundary_loops(tri, state.in_patch);
   // The first corner of a patch triangle at each vertex (visited backwards, the first one written
@@ -786,7 +814,7 @@ inline Planar_embedding_report check_domain_embedding(const Conformal_flattening
 // Eqn. 3.5), after the welding's uniform scale, and the layout is isometric to the final metric.
 inline void compute_conformal_factors(Conformal_flattening& result, const Flattening_state& state)
 {
-  const welding::Indexed_patch& patch = result.patch;
+  const welding::Indexed_patch& patch = Patch_access::of(result);
   Flattening_report& report = result.report;
   result.conformal_factor.resize(patch.number_of_input_vertices);
   for(std::size_t v = 0; v < patch.number_of_input_vertices; ++v)
@@ -919,7 +947,7 @@ Conformal_flattening conformal_flatten(const TriangleMesh& mesh,
 
   Conformal_flattening result;
   Flattening_report& report = result.report;
-  internal::welding::Indexed_patch& patch = result.patch;
+  internal::welding::Indexed_patch& patch = internal::flattening::Patch_access::of(result);
   patch = internal::welding::make_indexed_patch(mesh, vpm, vim, fim);
   report.boundary_loops = patch.boundary_loops.size();
   flattening::check_edge_length_range(patch);

@@ -24,11 +24,14 @@
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/property_map.h>
 
+#include <CGAL/Surface_mesh.h>
+
 #include <algorithm>
 #include <array>
 #include <functional>
 #include <iterator>
 #include <map>
+#include <set>
 #include <sstream>
 #include <string>
 #include <utility>
@@ -179,7 +182,8 @@ private:
 
 /// A glued output: the mesh, and for each of its vertices (in the order of `vertices(mesh)`) its
 /// point and the segmented face holding it. Where the mesh intersects itself, `crossings` has the
-/// centroids of the intersecting triangles, two per intersecting pair.
+/// centroids of the intersecting triangles, two per intersecting pair, and `crossing_patches`
+/// the patches these triangles belong to.
 template <typename TriangleMesh>
 struct Glued_output
 {
@@ -188,6 +192,7 @@ struct Glued_output
   std::vector<Poly_annulus_segmentation::Face> vertex_faces;
   bool intersects = false;
   std::vector<Epick::Point_3> crossings;
+  std::set<std::size_t> crossing_patches;
 };
 
 /// The mesh of the triangles of `soup`. Only the points some triangle uses become vertices: the
@@ -251,6 +256,23 @@ std::vector<Epick::Point_3> centroids_of_intersecting_faces(const TriangleMesh& 
   return centroids;
 }
 
+/// The patches whose triangles in `soup` intersect others. (The soup is meshed again as a
+/// `Surface_mesh`, whose faces are the soup's triangles in order.)
+inline std::set<std::size_t> patches_of_intersecting_triangles(const Glued_soup& soup)
+{
+  typedef CGAL::Surface_mesh<Epick::Point_3> Soup_mesh;
+  Soup_mesh mesh;
+  Polygon_mesh_processing::polygon_soup_to_polygon_mesh(soup.points, soup.triangles, mesh);
+  std::vector<std::pair<Soup_mesh::Face_index, Soup_mesh::Face_index> > intersecting;
+  Polygon_mesh_processing::self_intersections(mesh, std::back_inserter(intersecting));
+  std::set<std::size_t> patches;
+  for(const auto& pair : intersecting)
+    for(Soup_mesh::Face_index f : {pair.first, pair.second})
+      if(std::size_t(f) < soup.patch_of_triangle.size())
+        patches.insert(soup.patch_of_triangle[std::size_t(f)]);
+  return patches;
+}
+
 /// The patches of `meshed` glued, improved after gluing and checked: no self-intersection may be
 /// created (exact predicates). Where the output intersects itself and the input does not
 /// (`input_self_intersects`, asked only then), the improvements with the moves are given up
@@ -280,7 +302,10 @@ Glued_output<TriangleMesh> glue_patches(const Meshed_patches& meshed, const Poly
     output.intersects = Polygon_mesh_processing::does_self_intersect<ConcurrencyTag>(output.mesh);
   }
   if(output.intersects)
+  {
     output.crossings = centroids_of_intersecting_faces(output.mesh);
+    output.crossing_patches = patches_of_intersecting_triangles(soup); // the soup is as glued again
+  }
   return output;
 }
 

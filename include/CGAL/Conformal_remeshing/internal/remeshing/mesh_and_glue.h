@@ -6,7 +6,8 @@
 //  1. the output intersects itself where the input does not (two parts of the surface closer
 //     than the output's chords deviate from it): those places are meshed again with edges of half
 //     the target there, graded to the target by half the distance, then a quarter, up to
-//     `max_self_intersection_refinements` rounds; the flattenings are kept;
+//     `max_self_intersection_refinements` rounds; the flattenings are kept, and so are the meshes
+//     of the patches that have no intersecting triangle and whose boundary samples stay the same;
 //  2. with frontal insertion, should the frontally placed points still not mesh the surface (patches
 //     that do not glue, an output that intersects itself), the surface is meshed again by Delaunay
 //     refinement alone, with the same rounds.
@@ -29,6 +30,7 @@
 
 #include <chrono>
 #include <functional>
+#include <set>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -42,8 +44,12 @@ inline void add_meshing_statistics(const Meshed_patches& meshed, Remeshing_stati
 {
   statistics.boundary_samples = meshed.samples.points.size();
   statistics.boundary_curves = meshed.samples.number_of_curves;
+  statistics.patch_jobs_run += meshed.jobs_run;
+  statistics.patch_jobs_kept += meshed.jobs_kept;
   for(const Remeshed_patch& r : meshed.remeshed)
   {
+    if(r.kept_from_earlier_sizes)
+      continue;
     statistics.seconds_planar_meshing += r.seconds_planar_meshing;
     statistics.seconds_optimization += r.seconds_optimization;
     statistics.seconds_pull_back += r.seconds_pull_back;
@@ -83,15 +89,19 @@ Glued_output<TriangleMesh> mesh_and_glue(const Flattened_surface& surface, const
   const auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
   const double h = options.target_edge_length;
   std::vector<Epick::Point_3> crossings; // centroids of intersecting triangles, a quarter target apart
+  Meshed_patches meshed;
+  std::set<std::size_t> crossing_patches;
   for(int refinement = 0;; ++refinement)
   {
     Clock::time_point start = Clock::now();
-    progress("meshing " + std::to_string(surface.flattened.patches.size()) + " patches");
-    const Sizing sizing(surface.segmentation, h,
-                        crossings.empty() ? options.sizing_field : shorter_near(options.sizing_field, crossings, h / double(1 << refinement)),
-                        options.maximum_chord_error);
-    const Meshed_patches meshed =
-      mesh_patches_on_shared_samples<ConcurrencyTag>(surface, sizing, options.corner_angle, meshing, time_limit, progress, report);
+    progress(refinement == 0 ? "meshing " + std::to_string(surface.patches.size()) + " patches"
+                             : "meshing again " + std::to_string(crossing_patches.size()) + " patches and their neighbours");
+    Local_refinement near_crossings;
+    near_crossings.points = crossings;
+    near_crossings.size = h / double(1 << refinement);
+    const Sizing sizing(surface.segmentation, h, options.sizing_field, options.maximum_chord_error, near_crossings);
+    meshed = mesh_patches_on_shared_samples<ConcurrencyTag>(surface, sizing, options.corner_angle, meshing, time_limit, progress,
+                                                            report, refinement == 0 ? nullptr : &meshed, crossing_patches);
     statistics.seconds_meshing_stage += seconds_since(start);
     add_meshing_statistics(meshed, statistics);
 
@@ -104,6 +114,8 @@ Glued_output<TriangleMesh> mesh_and_glue(const Flattened_surface& surface, const
       return glued;
     if(refinement == max_self_intersection_refinements || glued.crossings.empty())
       throw self_intersection_error(glued.crossings);
+    const std::set<std::size_t> around = with_neighbours(glued.crossing_patches, meshed);
+    crossing_patches.insert(around.begin(), around.end());
     const std::size_t known = crossings.size();
     for(const Epick::Point_3& c : glued.crossings)
       add_if_far(crossings, c, 0.25 * h);

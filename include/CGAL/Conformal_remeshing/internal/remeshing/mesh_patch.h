@@ -1,9 +1,10 @@
 // Copyright (c) 2026 CGAL Conformal Remeshing contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// One patch of the pipeline meshed: its flattening's planar domain meshed on the shared boundary
-// samples (frontal insertion, then Delaunay refinement), optimized on the surface, and pulled
-// back onto the input surface through the flow's correspondence.
+// One patch job run (`mesh_patch()`): the patch's flattened domain meshed in the plane on its
+// fixed boundary samples (frontal insertion, then Delaunay refinement), optimized on the surface,
+// and pulled back onto the input surface through the flow's correspondence. It reads its job
+// (patch_job.h) and nothing else.
 
 #ifndef CGAL_CONFORMAL_REMESHING_INTERNAL_REMESHING_MESH_PATCH_H
 #define CGAL_CONFORMAL_REMESHING_INTERNAL_REMESHING_MESH_PATCH_H
@@ -11,11 +12,10 @@
 #include <CGAL/Conformal_remeshing/Error.h>
 #include <CGAL/Conformal_remeshing/Remeshing_report.h>
 #include <CGAL/Conformal_remeshing/conformal_flatten.h>
-#include <CGAL/Conformal_remeshing/internal/remeshing/boundary_curves.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/kept_input_vertices.h>
+#include <CGAL/Conformal_remeshing/internal/remeshing/patch_job.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/planar_locator.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/planar_mesher.h>
-#include <CGAL/Conformal_remeshing/internal/remeshing/sizing.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/surface_optimization.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/tuning.h>
 
@@ -39,58 +39,6 @@ namespace Conformal_remeshing {
 namespace internal {
 namespace remeshing {
 
-// The surface point of every vertex of the flat triangulation. A patch vertex has its own point;
-// a vertex that the refinement inserted is mapped once through the correspondence (mapping every
-// triangle corner back through the flips instead costs millions of lifts on a CAD fan).
-inline std::vector<Epick::Point_3> vertex_surface_points(const Conformal_flattening& flat)
-{
-  std::vector<Epick::Point_3> point(flat.layout.size());
-  std::vector<char> known(flat.layout.size(), 0);
-  for(std::size_t v = 0; v < (std::min)(flat.patch.points.size(), point.size()); ++v)
-  {
-    const internal::welding::Vec3& x = flat.patch.points[v];
-    point[v] = Epick::Point_3(x[0], x[1], x[2]);
-    known[v] = 1;
-  }
-  for(std::size_t t = 0; t < flat.triangles.size(); ++t)
-    for(int c = 0; c < 3; ++c)
-      if(!known[flat.triangles[t][c]])
-      {
-        std::array<double, 3> b{{0., 0., 0.}};
-        b[c] = 1.;
-        point[flat.triangles[t][c]] = flat.surface_point(t, b);
-        known[flat.triangles[t][c]] = 1;
-      }
-  return point;
-}
-
-// The local scale of the map (planar length over surface length) at the vertices of the flat
-// triangulation, averaged over their triangles: the factor that turns a target length on the surface into one in
-// the plane.
-inline std::vector<double> local_scale(const Conformal_flattening& flat)
-{
-  const std::vector<Epick::Point_3> point = vertex_surface_points(flat);
-  std::vector<double> scale(flat.layout.size(), 0.), weight(flat.layout.size(), 0.);
-  for(const std::array<int, 3>& triangle : flat.triangles)
-  {
-    double planar = 0., spatial = 0.;
-    for(int c = 0; c < 3; ++c)
-    {
-      const int v = triangle[c], w = triangle[(c + 1) % 3];
-      planar += std::sqrt(CGAL::squared_distance(flat.layout[v], flat.layout[w]));
-      spatial += std::sqrt(CGAL::squared_distance(point[v], point[w]));
-    }
-    for(int v : triangle)
-    {
-      scale[v] += planar / spatial;
-      weight[v] += 1.;
-    }
-  }
-  for(std::size_t v = 0; v < scale.size(); ++v)
-    if(weight[v] > 0.)
-      scale[v] /= weight[v];
-  return scale;
-}
 // One patch, remeshed: its boundary samples (indices into the curve samples), its interior
 // points on the surface, and triangles whose corners index the boundary samples first, then
 // the interior points.
@@ -110,6 +58,7 @@ struct Remeshed_patch
   Surface_optimization_report optimization;
   double seconds_planar_meshing = 0., seconds_optimization = 0., seconds_pull_back = 0.;
   Meshing_phase_seconds phases; // of the planar meshing and the optimization
+  bool kept_from_earlier_sizes = false; ///< meshed in an earlier round of the stage, and counted there
 };
 
 // The glue's preconditions, for one patch: every chord between consecutive samples of a loop is
@@ -118,17 +67,18 @@ struct Remeshed_patch
 // of a chord (a diagonal between two samples that the patch touches elsewhere would make a third
 // triangle on that chord). Where a patch is thinner than the sample spacing, a chord of one side
 // can cross the other side in the plane. The offending chords are returned, as pairs of sample
-// indices in `samples`, for their curves to be sampled more densely. Also returned: the other
-// edges between two samples, diagonals across the patch, which no second patch may have (four
-// triangles on one edge): see `remesh_conformal()`.
+// indices, for their curves to be sampled more densely. Also returned: the other edges between
+// two samples, diagonals across the patch, which no second patch may have (four triangles on one
+// edge): see `patches_to_split_shared_diagonals()`.
 struct Glue_check
 {
   std::vector<std::pair<std::size_t, std::size_t> > chords_not_glued, sample_diagonals;
 };
 
-inline Glue_check check_glue(const std::vector<std::vector<Boundary_sample> >& loops, const Planar_mesh& planar,
-                             const std::vector<std::size_t>& boundary_ids, const Curve_samples& samples)
+inline Glue_check check_glue(const Patch_boundary& boundary, const Planar_mesh& planar)
 {
+  const std::vector<std::vector<Boundary_sample> >& loops = boundary.loops;
+  const std::vector<std::size_t>& boundary_ids = boundary.sample_ids;
   std::set<std::pair<std::size_t, std::size_t> > loop_chords;
   std::size_t first = 0;
   for(const auto& loop : loops)
@@ -148,7 +98,7 @@ inline Glue_check check_glue(const std::vector<std::vector<Boundary_sample> >& l
               && !loop_chords.count({edge.second, edge.first}))
       {
         const auto pair = std::minmax(boundary_ids[edge.first], boundary_ids[edge.second]);
-        if(samples.curve_of_chord.count(pair))
+        if(boundary.is_chord(pair))
           not_glued.insert(pair);
         else
           local_diagonals.insert(std::minmax(edge.first, edge.second));
@@ -171,7 +121,7 @@ inline Glue_check check_glue(const std::vector<std::vector<Boundary_sample> >& l
 // table of the last lifts (a point whose entry was overwritten starts from the last point's
 // triangle: a longer walk, the same answer); a memory of every lift costs more in lookups than
 // it saves in walks. (The optimizer keeps a hint per vertex instead of this table: see its lift
-// in remesh_flattened_patch().)
+// in optimize_patch_on_surface().)
 class Surface_map_with_hints
 {
 public:
@@ -223,9 +173,9 @@ private:
 class Planar_size_field
 {
 public:
-  Planar_size_field(const Conformal_flattening& flat, const std::vector<double>& scale, const Extracted_patch& patch,
-                    const Sizing& sizing, const Planar_locator& locator)
-    : flat_(flat), scale_(scale), patch_(patch), sizing_(sizing), locator_(locator)
+  Planar_size_field(const Conformal_flattening& flat, const std::vector<double>& scale, const Patch_size_field& size,
+                    const Planar_locator& locator)
+    : flat_(flat), scale_(scale), size_(size), locator_(locator)
   {}
 
   /// The target edge length at `p` on the surface, and the map's scale there.
@@ -235,11 +185,11 @@ public:
     double s = 0.;
     for(int c = 0; c < 3; ++c)
       s += l.coordinates[c] * scale_[flat_.triangles[l.triangle][c]];
-    double size = sizing_.target();
-    if(!sizing_.is_uniform())
+    double size = size_.target();
+    if(!size_.is_uniform())
     {
       const Domain_point q = flat_.to_surface(l.triangle, l.coordinates);
-      size = sizing_.at(q.point, patch_.segmented_face[q.input_face]);
+      size = size_.at(q.point, q.input_face);
     }
     return std::make_pair(size, s);
   }
@@ -255,44 +205,27 @@ public:
 private:
   const Conformal_flattening& flat_;
   const std::vector<double>& scale_;
-  const Extracted_patch& patch_;
-  const Sizing& sizing_;
+  const Patch_size_field& size_;
   const Planar_locator& locator_;
   mutable Size_field_hint last_hint_ = no_size_field_hint;
 };
 
-// The boundary loops of a patch as planar images of the shared samples, and the pairs of loop
-// positions that must not be joined (`diagonals_to_split`, in sample indices, mapped to every
-// position of each sample: a slit's samples are on two sides).
-struct Patch_loops
+// The pairs of loop positions that must not be joined: `diagonals_to_split` (shared sample
+// indices) mapped to every position of each sample (a slit's samples are on two sides).
+inline std::vector<std::pair<std::size_t, std::size_t> > local_diagonals_to_split(const Patch_boundary& boundary,
+                                                                                   const Sample_pairs& diagonals_to_split)
 {
-  std::vector<std::vector<Boundary_sample> > loops;
-  std::vector<std::size_t> boundary_ids; // the sample index of each loop position, in loop order
-  std::vector<std::pair<std::size_t, std::size_t> > local_diagonals_to_split;
-  std::vector<Epick::Point_3> sample_points; // in loop order
-};
-
-inline Patch_loops patch_loops(const Conformal_flattening& flat, const Extracted_patch& patch, const Curve_samples& samples,
-                               const std::set<std::pair<std::size_t, std::size_t> >& diagonals_to_split)
-{
-  Patch_loops result;
-  result.loops.push_back(loop_samples(flat.outer_boundary, patch, samples, result.boundary_ids));
-  for(const auto& hole : flat.holes)
-    result.loops.push_back(loop_samples(hole, patch, samples, result.boundary_ids));
-  if(!diagonals_to_split.empty())
-  {
-    std::map<std::size_t, std::vector<std::size_t> > positions;
-    for(std::size_t i = 0; i < result.boundary_ids.size(); ++i)
-      positions[result.boundary_ids[i]].push_back(i);
-    for(const auto& pair : diagonals_to_split)
-      if(positions.count(pair.first) && positions.count(pair.second))
-        for(std::size_t i : positions[pair.first])
-          for(std::size_t j : positions[pair.second])
-            result.local_diagonals_to_split.emplace_back(i, j);
-  }
-  for(const auto& loop : result.loops)
-    for(const Boundary_sample& s : loop)
-      result.sample_points.push_back(s.point);
+  std::vector<std::pair<std::size_t, std::size_t> > result;
+  if(diagonals_to_split.empty())
+    return result;
+  std::map<std::size_t, std::vector<std::size_t> > positions;
+  for(std::size_t i = 0; i < boundary.sample_ids.size(); ++i)
+    positions[boundary.sample_ids[i]].push_back(i);
+  for(const auto& pair : diagonals_to_split)
+    if(positions.count(pair.first) && positions.count(pair.second))
+      for(std::size_t i : positions[pair.first])
+        for(std::size_t j : positions[pair.second])
+          result.emplace_back(i, j);
   return result;
 }
 
@@ -301,25 +234,25 @@ inline Patch_loops patch_loops(const Conformal_flattening& flat, const Extracted
 // borders seeded (see equilateral_seeds(); along cuts the points move after gluing instead, see
 // moves_after_gluing.h), and so is the first ring around each kept tip (see
 // seeds_around_points()); then frontal insertion and Delaunay refinement.
-inline Planar_mesh mesh_patch_in_plane(const Conformal_flattening& flat, const Extracted_patch& patch, const Curve_samples& samples,
-                                       const Sizing& sizing, const Planar_size_field& planar_size, const Patch_loops& loops,
-                                       double min_angle, const Planar_smoothing& smoothing, const Frontal_insertion& frontal,
-                                       Surface_map_with_hints& surface_map)
+inline Planar_mesh mesh_patch_in_plane(const Patch_job& job, const Planar_size_field& planar_size, Surface_map_with_hints& surface_map)
 {
+  const Conformal_flattening& flat = job.surface->flattening;
+  const Extracted_patch& patch = job.surface->patch;
+  const Patch_boundary& boundary = job.boundary;
   std::vector<Epick::Point_2> fixed_points;
   std::vector<std::pair<Epick::Point_2, Epick::Point_3> > tips;
-  for(std::size_t v : kept_input_vertices(patch, sizing.target(), kept_tip_tolerance, loops.sample_points))
+  for(std::size_t v : kept_input_vertices(patch, job.size.target(), kept_tip_tolerance, boundary.sample_points))
   {
     fixed_points.push_back(flat.uv[v]);
     tips.emplace_back(flat.uv[v], patch.mesh.point(Extracted_patch::Mesh::Vertex_index(Extracted_patch::Mesh::size_type(v))));
   }
-  const auto on_kept_curve = [&](const Boundary_sample& a, const Boundary_sample& b) { return samples.is_kept_chord(a.id, b.id); };
+  const auto on_kept_curve = [&](const Boundary_sample& a, const Boundary_sample& b) { return boundary.is_kept_chord(a.id, b.id); };
   const auto surface_point = [&](const Epick::Point_2& p, Epick::Point_3& x) {
     const Surface_map_with_hints::Lifted lifted = surface_map.lift(p);
     x = flat.surface_point(lifted.on_patch);
     return !lifted.clamped;
   };
-  std::vector<Planar_seed> seeds = equilateral_seeds(loops.loops, on_kept_curve, surface_point, seed_layers);
+  std::vector<Planar_seed> seeds = equilateral_seeds(boundary.loops, on_kept_curve, surface_point, seed_layers);
   Size_field_hint tip_hint = no_size_field_hint;
   const auto target_lengths = [&](const Epick::Point_2& p) {
     const std::pair<double, double> size = planar_size.size_and_scale(p, tip_hint);
@@ -327,8 +260,10 @@ inline Planar_mesh mesh_patch_in_plane(const Conformal_flattening& flat, const E
   };
   for(const Planar_seed& seed : seeds_around_points(tips, target_lengths, surface_point))
     seeds.push_back(seed);
-  return mesh_planar_domain<Epick>(loops.loops, (std::min)(min_angle, planar_refinement_angle_bound), planar_size, smoothing, false,
-                                   loops.local_diagonals_to_split, fixed_points, seeds, frontal);
+  const Patch_meshing& meshing = job.meshing;
+  return mesh_planar_domain<Epick>(boundary.loops, (std::min)(meshing.minimum_angle, planar_refinement_angle_bound), planar_size,
+                                   meshing.smoothing, false, local_diagonals_to_split(boundary, job.diagonals_to_split),
+                                   fixed_points, seeds, meshing.frontal);
 }
 
 // The interior points of `planar` in spatial order. The refinement numbers its points in the
@@ -345,19 +280,18 @@ inline std::vector<std::size_t> interior_points_in_space_order(const Planar_mesh
 
 // Flips and moves judged on the surface (see surface_optimization.h). The surface positions are
 // the optimizer's working state only: the pull-back finds the final points' input faces.
-inline Surface_optimization_report optimize_patch_on_surface(const Conformal_flattening& flat, const Planar_locator& locator,
-                                                             Surface_map_with_hints& surface_map, const Sizing& sizing,
-                                                             const Patch_loops& loops, double min_angle, int optimization_rounds,
-                                                             const std::set<std::pair<std::size_t, std::size_t> >& diagonals_to_split,
-                                                             bool moves_in_parallel, Planar_mesh& planar)
+inline Surface_optimization_report optimize_patch_on_surface(const Patch_job& job, const Planar_locator& locator,
+                                                             Surface_map_with_hints& surface_map, Planar_mesh& planar)
 {
+  const Conformal_flattening& flat = job.surface->flattening;
+  const Patch_meshing& meshing = job.meshing;
   // No state but the hint, which each vertex keeps (see Surface_mesh_optimizer): the moves of a
   // pass may call it from several threads at once.
   const auto lift = [&](const Epick::Point_2& p, std::size_t& hint) {
     const Planar_locator::Location l = locator.locate(p, hint);
     return flat.surface_point(l.triangle, l.coordinates);
   };
-  std::vector<Epick::Point_3> positions(loops.sample_points); // the samples, in loop order, first
+  std::vector<Epick::Point_3> positions(job.boundary.sample_points); // the samples, in loop order, first
   positions.resize(planar.points.size());
   std::vector<std::size_t> hints(planar.points.size(), Planar_locator::no_hint); // where each was found
   for(std::size_t i : interior_points_in_space_order(planar))
@@ -366,14 +300,15 @@ inline Surface_optimization_report optimize_patch_on_surface(const Conformal_fla
     positions[i] = flat.surface_point(lifted.on_patch);
     hints[i] = lifted.triangle;
   }
-  const double h = sizing.target();
+  const double h = job.size.target();
   Edge_split_bounds split_bounds;
   split_bounds.longest = split_edge_factor * h;
   split_bounds.across_bend = {shortest_off_surface_split_factor * h, off_surface_split_factor * h};
   split_bounds.tight_curve = {shortest_tight_curve_split_factor * h, tight_curve_split_factor * h};
-  return optimize_on_surface(planar.points, positions, planar.triangles, planar.number_of_fixed_points, lift, min_angle,
-                             longest_edge_factor * h, split_bounds, optimization_rounds, loops.boundary_ids, diagonals_to_split,
-                             moves_in_parallel, sizing.is_uniform() ? collapse_edge_factor * h : 0., hints);
+  return optimize_on_surface(planar.points, positions, planar.triangles, planar.number_of_fixed_points, lift, meshing.minimum_angle,
+                             longest_edge_factor * h, split_bounds, meshing.optimization_rounds, job.boundary.sample_ids,
+                             job.diagonals_to_split, meshing.moves_in_parallel, job.size.is_uniform() ? collapse_edge_factor * h : 0.,
+                             hints);
 }
 
 inline void record_optimization_phases(Remeshed_patch& result)
@@ -391,10 +326,11 @@ inline void record_optimization_phases(Remeshed_patch& result)
 
 // The interior points of `planar` pulled back onto the surface (sorted again: the optimization
 // moves points and adds some), and the triangles numbered as the glue wants them: the samples by
-// their index in `samples`, then the interior points.
-inline void pull_back(const Conformal_flattening& flat, const Extracted_patch& patch, const Curve_samples& samples,
-                      Surface_map_with_hints& surface_map, const Planar_mesh& planar, Remeshed_patch& result)
+// their shared index, then the interior points.
+inline void pull_back(const Patch_job& job, Surface_map_with_hints& surface_map, const Planar_mesh& planar, Remeshed_patch& result)
 {
+  const Conformal_flattening& flat = job.surface->flattening;
+  const Extracted_patch& patch = job.surface->patch;
   result.interior_points.resize(planar.points.size() - planar.number_of_samples);
   result.interior_faces.resize(result.interior_points.size());
   for(std::size_t i : interior_points_in_space_order(planar))
@@ -410,59 +346,75 @@ inline void pull_back(const Conformal_flattening& flat, const Extracted_patch& p
     std::array<std::size_t, 3> corners;
     for(int c = 0; c < 3; ++c)
       corners[c] = std::size_t(t[c]) < planar.number_of_samples ? result.boundary_ids[t[c]]
-                                                                  : samples.points.size() + (t[c] - planar.number_of_samples);
+                                                                  : job.boundary.number_of_shared_samples + (t[c] - planar.number_of_samples);
     result.triangles.push_back(corners);
   }
 }
 
-// One patch meshed: planar meshing of its flattening on the shared boundary samples, the
-// optimization on the surface, and the pull-back of the new points onto the surface through the
-// flow's correspondence. No edge joins the two samples of a pair in `diagonals_to_split` (sample
-// indices, smaller first). The optimization's vertex moves run in parallel with
-// `moves_in_parallel`, with the same result. Where chords would not glue (`chords_not_glued`),
-// the result stops after the planar meshing.
-inline Remeshed_patch remesh_flattened_patch(const Conformal_flattening& flat, const std::vector<double>& scale,
-                                             const Extracted_patch& patch,
-                                             const Curve_samples& samples, const Sizing& sizing, double min_angle,
-                                             const Planar_smoothing& smoothing, const Frontal_insertion& frontal,
-                                             int optimization_rounds,
-                                             const std::set<std::pair<std::size_t, std::size_t> >& diagonals_to_split = {},
-                                             bool moves_in_parallel = false)
+/// The patch of `job` meshed: planar meshing of its flattening on its boundary samples, the
+/// optimization on the surface, and the pull-back of the new points onto the surface through the
+/// flow's correspondence. No edge joins the two samples of a pair in `job.diagonals_to_split`.
+/// The optimization's vertex moves run in parallel with `job.meshing.moves_in_parallel`, with
+/// the same result. Where chords would not glue (`chords_not_glued`), the result stops after the
+/// planar meshing.
+/// \throws Error with `Error_code::NOT_AN_EMBEDDING` when the boundary samples overlap in the plane.
+inline Remeshed_patch mesh_patch(const Patch_job& job)
 {
   typedef std::chrono::steady_clock Clock;
   const auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
   Clock::time_point start = Clock::now();
+  const Conformal_flattening& flat = job.surface->flattening;
   Remeshed_patch result;
+  result.boundary_ids = job.boundary.sample_ids;
   const Planar_locator locator(flat.layout, flat.triangles);
-  const Planar_size_field planar_size(flat, scale, patch, sizing, locator);
-  const Patch_loops loops = patch_loops(flat, patch, samples, diagonals_to_split);
-  result.boundary_ids = loops.boundary_ids;
+  const Planar_size_field planar_size(flat, job.surface->scale, job.size, locator);
   Surface_map_with_hints surface_map(flat, locator);
-  Planar_mesh planar =
-    mesh_patch_in_plane(flat, patch, samples, sizing, planar_size, loops, min_angle, smoothing, frontal, surface_map);
+  Planar_mesh planar = mesh_patch_in_plane(job, planar_size, surface_map);
   if(planar.number_of_samples != result.boundary_ids.size())
     throw Error(Error_code::NOT_AN_EMBEDDING, "remesh_conformal: the boundary samples of a patch overlap in the plane");
   result.seconds_planar_meshing = seconds_since(start);
   result.phases.planar_refinement = planar.seconds_refinement;
   result.phases.planar_smoothing = planar.seconds_smoothing;
   result.phases.planar_setup = result.seconds_planar_meshing - planar.seconds_refinement - planar.seconds_smoothing;
-  result.chords_not_glued = check_glue(loops.loops, planar, result.boundary_ids, samples).chords_not_glued;
+  result.chords_not_glued = check_glue(job.boundary, planar).chords_not_glued;
   if(!result.chords_not_glued.empty())
     return result;
 
   start = Clock::now();
-  if(optimization_rounds > 0)
-    result.optimization = optimize_patch_on_surface(flat, locator, surface_map, sizing, loops, min_angle, optimization_rounds,
-                                                    diagonals_to_split, moves_in_parallel, planar);
+  if(job.meshing.optimization_rounds > 0)
+    result.optimization = optimize_patch_on_surface(job, locator, surface_map, planar);
   result.seconds_optimization = seconds_since(start);
   record_optimization_phases(result);
   // The optimizer keeps every chord (it never flips a boundary edge) and makes none of the
   // diagonals to split, but it may have made or removed others.
-  result.sample_diagonals = check_glue(loops.loops, planar, result.boundary_ids, samples).sample_diagonals;
+  result.sample_diagonals = check_glue(job.boundary, planar).sample_diagonals;
 
   start = Clock::now();
-  pull_back(flat, patch, samples, surface_map, planar, result);
+  pull_back(job, surface_map, planar, result);
   result.seconds_pull_back = seconds_since(start);
+  return result;
+}
+
+/// The result of a job run on boundary `before`, for an equal job on boundary `after` (see
+/// `same_meshing_inputs()`): the same mesh, its shared samples renamed.
+inline Remeshed_patch renumbered(Remeshed_patch result, const Patch_boundary& before, const Patch_boundary& after)
+{
+  std::map<std::size_t, std::size_t> name;
+  for(std::size_t i = 0; i < before.sample_ids.size(); ++i)
+    name.emplace(before.sample_ids[i], after.sample_ids[i]);
+  const auto rename = [&](std::size_t i) {
+    return i < before.number_of_shared_samples ? name.at(i) : i - before.number_of_shared_samples + after.number_of_shared_samples;
+  };
+  const auto rename_pair = [&](std::pair<std::size_t, std::size_t>& pair) { pair = std::minmax(rename(pair.first), rename(pair.second)); };
+  result.boundary_ids = after.sample_ids;
+  for(std::array<std::size_t, 3>& t : result.triangles)
+    for(std::size_t& c : t)
+      c = rename(c);
+  for(auto& chord : result.chords_not_glued)
+    rename_pair(chord);
+  std::sort(result.chords_not_glued.begin(), result.chords_not_glued.end());
+  for(auto& diagonal : result.sample_diagonals)
+    rename_pair(diagonal);
   return result;
 }
 

@@ -2,10 +2,10 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The meshing stage of `remesh_conformal()`: every patch boundary curve sampled once, in 3D,
-// then every patch meshed on those shared samples (`remesh_flattened_patch()`), in parallel.
-// The stage also mends what one patch's mesh alone cannot show: chords that do not glue (the
-// curves are sampled more densely) and diagonals that two patches share (all but one patch split
-// them).
+// then one job per patch (patch_job.h) run on those shared samples (`mesh_patch()`), in
+// parallel. The stage also mends what one patch's mesh alone cannot show: chords that do not glue
+// (the curves are sampled more densely) and diagonals that two patches share (all but one patch
+// split them). Only the jobs whose inputs changed are run again.
 
 #ifndef CGAL_CONFORMAL_REMESHING_INTERNAL_REMESHING_MESH_PATCHES_H
 #define CGAL_CONFORMAL_REMESHING_INTERNAL_REMESHING_MESH_PATCHES_H
@@ -16,6 +16,7 @@
 #include <CGAL/Conformal_remeshing/internal/time_limit.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/boundary_curves.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/mesh_patch.h>
+#include <CGAL/Conformal_remeshing/internal/remeshing/patch_job.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/segment_and_flatten.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/tuning.h>
 
@@ -35,55 +36,41 @@ namespace Conformal_remeshing {
 namespace internal {
 namespace remeshing {
 
-/// How each patch is meshed in the plane and optimized on the surface.
-struct Patch_meshing
-{
-  double minimum_angle = 28.;
-  Planar_smoothing smoothing;
-  Frontal_insertion frontal;
-  int optimization_rounds = 5;
-  bool moves_in_parallel = false;
-};
-
-/// The boundary samples shared by the patches, and each patch remeshed on them.
+/// The boundary samples shared by the patches, the job of each patch and its result, and how
+/// many times each boundary curve was sampled twice as densely.
 struct Meshed_patches
 {
   Curve_samples samples;
+  std::vector<Patch_job> jobs;
   std::vector<Remeshed_patch> remeshed;
+  std::vector<int> halvings;
+  std::size_t jobs_run = 0, jobs_kept = 0;
 };
 
-typedef std::set<std::pair<std::size_t, std::size_t> > Sample_pairs;
-
-/// Meshes the patches `to_mesh` of `surface` on `samples` into `remeshed`, in parallel.
+/// Runs the jobs `to_run` of `jobs` into `remeshed`, in parallel. The Lloyd iterations, which
+/// may take longer than the rest of a patch's meshing, stop at the time limit too.
 /// \throws Error with `Error_code::NOT_AN_EMBEDDING` naming the first patch that failed.
 template <typename ConcurrencyTag>
-void mesh_patches_in_list(const std::vector<std::size_t>& to_mesh, const Flattened_surface& surface, const Curve_samples& samples,
-                          const Sizing& sizing, const Patch_meshing& meshing, const std::vector<Sample_pairs>& diagonals_to_split,
-                          const Time_limit& time_limit, std::vector<Remeshed_patch>& remeshed)
+void run_patch_jobs(const std::vector<std::size_t>& to_run, std::vector<Patch_job>& jobs, const Time_limit& time_limit,
+                    std::vector<Remeshed_patch>& remeshed)
 {
-  const std::vector<Extracted_patch>& patches = surface.flattened.patches;
-  std::vector<std::string> failures(patches.size());
-  for_each_index<ConcurrencyTag>(to_mesh.size(), [&](std::size_t i) {
-    const std::size_t p = to_mesh[i];
+  std::vector<std::string> failures(jobs.size());
+  for_each_index<ConcurrencyTag>(to_run.size(), [&](std::size_t i) {
+    Patch_job& job = jobs[to_run[i]];
     try
     {
       time_limit.check("while meshing the patches");
-      // The Lloyd iterations, which may take longer than the rest of a patch's meshing, stop at
-      // the time limit too (the next check then throws).
-      Planar_smoothing patch_smoothing = meshing.smoothing;
       if(time_limit.is_limited())
-        patch_smoothing.lloyd_seconds = (std::max)(time_limit.remaining(), 1e-6); // 0 would be none
-      remeshed[p] = remesh_flattened_patch(surface.flattened.flattenings[p], surface.scales[p], patches[p], samples, sizing,
-                                           meshing.minimum_angle, patch_smoothing, meshing.frontal, meshing.optimization_rounds,
-                                           diagonals_to_split[p], meshing.moves_in_parallel);
+        job.meshing.smoothing.lloyd_seconds = (std::max)(time_limit.remaining(), 1e-6); // 0 would be none
+      remeshed[job.patch] = mesh_patch(job);
     }
     catch(const Error& e)
     {
-      failures[p] = e.what();
+      failures[job.patch] = e.what();
     }
   });
   time_limit.check("while meshing the patches");
-  for(std::size_t p = 0; p < patches.size(); ++p)
+  for(std::size_t p = 0; p < jobs.size(); ++p)
     if(!failures[p].empty())
       throw Error(Error_code::NOT_AN_EMBEDDING, "remesh_conformal: patch " + std::to_string(p) + ": " + failures[p]);
 }
@@ -151,44 +138,101 @@ inline std::set<std::size_t> patches_to_split_shared_diagonals(const std::vector
   return to_split;
 }
 
+/// `patches` and the patches that share a boundary sample with one of them in `meshed`.
+inline std::set<std::size_t> with_neighbours(const std::set<std::size_t>& patches, const Meshed_patches& meshed)
+{
+  std::set<std::size_t> samples;
+  for(std::size_t p : patches)
+    samples.insert(meshed.jobs[p].boundary.sample_ids.begin(), meshed.jobs[p].boundary.sample_ids.end());
+  std::set<std::size_t> result = patches;
+  for(const Patch_job& job : meshed.jobs)
+    if(std::any_of(job.boundary.sample_ids.begin(), job.boundary.sample_ids.end(), [&](std::size_t s) { return samples.count(s) > 0; }))
+      result.insert(job.patch);
+  return result;
+}
+
+/// The jobs of every patch on newly sampled curves. A job whose inputs equal those of a job
+/// already run (in `earlier`, unless its patch is in `to_run_again`) takes that job's result,
+/// renumbered; the others are returned to be run.
+inline std::vector<std::size_t> jobs_on_new_samples(const Flattened_surface& surface, const Sizing& sizing,
+                                                    const Patch_meshing& meshing, const Meshed_patches* earlier,
+                                                    const std::set<std::size_t>& to_run_again, Meshed_patches& result)
+{
+  const std::size_t n = surface.patches.size();
+  const std::vector<std::vector<std::size_t> > neighbours = chord_neighbours(result.samples);
+  std::vector<Patch_job> jobs(n);
+  std::vector<Remeshed_patch> remeshed(n);
+  std::vector<std::size_t> to_run;
+  for(std::size_t p = 0; p < n; ++p)
+  {
+    jobs[p] = patch_job(p, surface.patches, result.samples, neighbours, sizing, meshing, Sample_pairs());
+    if(earlier != nullptr && !to_run_again.count(p) && p < earlier->jobs.size()
+       && same_meshing_inputs(earlier->jobs[p], jobs[p]))
+      remeshed[p] = renumbered(earlier->remeshed[p], earlier->jobs[p].boundary, jobs[p].boundary);
+    else
+      to_run.push_back(p);
+  }
+  result.jobs = std::move(jobs);
+  result.remeshed = std::move(remeshed);
+  return to_run;
+}
+
 /// Every patch meshed and pulled back on boundary samples shared with its neighbours. Where
-/// chords do not glue, their curves are sampled twice as densely and every patch is meshed again
-/// (resampling renumbers the samples), up to `max_curve_halvings` times per curve. Where two
+/// chords do not glue, their curves are sampled twice as densely, up to `max_curve_halvings`
+/// times per curve, and the jobs of the patches whose boundary changed are run again. Where two
 /// patches join the same two samples by a diagonal (both flattenings nearly straight along a short
-/// curve between junctions), all but the first of them split it and are meshed again, up to
+/// curve between junctions), all but the first of them split it and are run again, up to
 /// `max_diagonal_rounds` rounds: splitting adds no edge between samples, so this ends unless
 /// smoothing brings new ones.
+///
+/// With `earlier`, the stage's result for the same surface with other sizes, the patches not in
+/// `to_run_again` whose boundary is unchanged keep their earlier meshes, and each curve starts as
+/// densely as it ended there.
 template <typename ConcurrencyTag, typename Progress>
 Meshed_patches mesh_patches_on_shared_samples(const Flattened_surface& surface, const Sizing& sizing, double corner_angle,
                                               const Patch_meshing& meshing, const Time_limit& time_limit, const Progress& progress,
-                                              Remeshing_report& report)
+                                              Remeshing_report& report, const Meshed_patches* earlier = nullptr,
+                                              const std::set<std::size_t>& to_run_again = {})
 {
-  const std::size_t n = surface.flattened.patches.size();
+  const std::size_t n = surface.patches.size();
   Meshed_patches result;
-  result.remeshed.resize(n);
-  std::vector<int> halvings;
+  if(earlier != nullptr)
+    result.halvings = earlier->halvings;
   std::vector<Sample_pairs> diagonals_to_split;
-  std::vector<std::size_t> to_mesh;
+  std::vector<std::size_t> to_run;
   bool resample = true;
   for(int diagonal_round = 0;;)
   {
     if(resample)
     {
-      result.samples = sample_boundary_curves(surface.segmentation, sizing, corner_angle, halvings);
-      halvings.resize(result.samples.number_of_curves, 0);
+      Meshed_patches before = std::move(result);
+      result = Meshed_patches();
+      result.halvings = before.halvings;
+      result.samples = sample_boundary_curves(surface.segmentation, sizing, corner_angle, result.halvings);
+      result.halvings.resize(result.samples.number_of_curves, 0);
+      if(before.jobs.empty())
+      {
+        to_run = jobs_on_new_samples(surface, sizing, meshing, earlier, to_run_again, result);
+        for(Remeshed_patch& r : result.remeshed)
+          r.kept_from_earlier_sizes = true;
+        for(std::size_t p : to_run)
+          result.remeshed[p].kept_from_earlier_sizes = false;
+      }
+      else
+        to_run = jobs_on_new_samples(surface, sizing, meshing, &before, {}, result);
+      result.jobs_run = before.jobs_run;
+      result.jobs_kept = before.jobs_kept + (n - to_run.size());
       diagonals_to_split.assign(n, {});
-      to_mesh.resize(n);
-      std::iota(to_mesh.begin(), to_mesh.end(), std::size_t(0));
     }
-    mesh_patches_in_list<ConcurrencyTag>(to_mesh, surface, result.samples, sizing, meshing, diagonals_to_split, time_limit,
-                                         result.remeshed);
-    const std::set<std::size_t> curves = curves_to_sample_again(result, halvings);
+    run_patch_jobs<ConcurrencyTag>(to_run, result.jobs, time_limit, result.remeshed);
+    result.jobs_run += to_run.size();
+    const std::set<std::size_t> curves = curves_to_sample_again(result, result.halvings);
     resample = !curves.empty();
     if(resample)
     {
       progress("sampling " + std::to_string(curves.size()) + " boundary curves of thin patches more densely");
       for(std::size_t c : curves)
-        ++halvings[c];
+        ++result.halvings[c];
       report.refined_boundary_curves += curves.size();
       continue;
     }
@@ -202,7 +246,9 @@ Meshed_patches mesh_patches_on_shared_samples(const Flattened_surface& surface, 
                                                   + std::to_string(max_diagonal_rounds) + " rounds of splitting such diagonals");
     progress("splitting diagonals shared by " + std::to_string(to_split.size() + 1) + " patches or more");
     report.split_diagonals += to_split.size();
-    to_mesh.assign(to_split.begin(), to_split.end());
+    to_run.assign(to_split.begin(), to_split.end());
+    for(std::size_t p : to_run)
+      result.jobs[p].diagonals_to_split = diagonals_to_split[p];
   }
   return result;
 }

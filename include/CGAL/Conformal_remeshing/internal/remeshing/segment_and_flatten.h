@@ -15,12 +15,14 @@
 #include <CGAL/Conformal_remeshing/segment_into_poly_annuli.h>
 #include <CGAL/Conformal_remeshing/internal/parallel_for_each_index.h>
 #include <CGAL/Conformal_remeshing/internal/time_limit.h>
-#include <CGAL/Conformal_remeshing/internal/remeshing/mesh_patch.h>
+#include <CGAL/Conformal_remeshing/internal/remeshing/flattened_patch.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/remeshing_options.h>
 
 #include <algorithm>
 #include <chrono>
+#include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -28,12 +30,12 @@ namespace Conformal_remeshing {
 namespace internal {
 namespace remeshing {
 
-/// The input cut into flattened patches.
+/// The input cut into flattened patches. The patches are shared, never changed: each patch job
+/// (patch_job.h) holds its own and can outlive the surface.
 struct Flattened_surface
 {
   Poly_annulus_segmentation segmentation; ///< with the bisections of the patches that failed
-  Flattened_poly_annuli flattened;
-  std::vector<std::vector<double> > scales; ///< the local scale of each flattening (see `local_scale()`)
+  std::vector<std::shared_ptr<const Flattened_patch> > patches; ///< by patch index of `segmentation`
 };
 
 inline std::string without_caller(const std::string& message)
@@ -42,14 +44,15 @@ inline std::string without_caller(const std::string& message)
   return message.compare(0, caller.size(), caller) == 0 ? message.substr(caller.size()) : message;
 }
 
-inline void add_flattening_statistics(const Flattened_surface& surface, Remeshing_report& report, Remeshing_statistics& statistics)
+inline void add_flattening_statistics(const Poly_annulus_segmentation& segmentation, const Flattened_poly_annuli& flattened,
+                                      Remeshing_report& report, Remeshing_statistics& statistics)
 {
-  report.patch_bisections = surface.flattened.bisections;
-  report.number_of_patches = surface.flattened.patches.size();
-  report.plane_cuts = surface.segmentation.plane_cuts;
-  report.feature_edges = surface.segmentation.feature_edges;
-  report.dangling_feature_edges = surface.segmentation.dangling_feature_edges;
-  for(const Conformal_flattening& flat : surface.flattened.flattenings)
+  report.patch_bisections = flattened.bisections;
+  report.number_of_patches = flattened.patches.size();
+  report.plane_cuts = segmentation.plane_cuts;
+  report.feature_edges = segmentation.feature_edges;
+  report.dangling_feature_edges = segmentation.dangling_feature_edges;
+  for(const Conformal_flattening& flat : flattened.flattenings)
   {
     const Flattening_report& r = flat.report;
     statistics.max_newton_iterations = (std::max)(statistics.max_newton_iterations, r.iterations);
@@ -83,6 +86,7 @@ void segment_and_flatten(const TriangleMesh& input, const Remeshing_options& opt
   const double snap = choose_parameter(get_parameter(np, internal_np::snap_distance), 0.1 * h);
   const double flow_length = choose_parameter(get_parameter(np, internal_np::maximum_edge_length), 2. * h);
   Clock::time_point start;
+  Flattened_poly_annuli flattened;
   const auto run = [&](const auto& segmentation_parameters) {
     start = Clock::now();
     progress("segmenting into poly-annuli");
@@ -90,7 +94,7 @@ void segment_and_flatten(const TriangleMesh& input, const Remeshing_options& opt
     statistics.seconds_segmentation += std::chrono::duration<double>(Clock::now() - start).count();
     time_limit.check("after the segmentation");
     start = Clock::now();
-    flatten_poly_annuli<ConcurrencyTag>(result.segmentation, result.flattened,
+    flatten_poly_annuli<ConcurrencyTag>(result.segmentation, flattened,
                                         parameters::maximum_edge_length(flow_length, parameters::snap_distance(snap, np)),
                                         time_limit, "remesh_conformal");
     statistics.seconds_flattening += std::chrono::duration<double>(Clock::now() - start).count();
@@ -110,11 +114,17 @@ void segment_and_flatten(const TriangleMesh& input, const Remeshing_options& opt
              + report.features_fallback_reason + "): segmenting again without them");
     run(parameters::features_angle(0., parameters::snap_distance(snap, np)));
   }
-  add_flattening_statistics(result, report, statistics);
+  add_flattening_statistics(result.segmentation, flattened, report, statistics);
 
-  const std::vector<Conformal_flattening>& flattenings = result.flattened.flattenings;
-  result.scales.resize(flattenings.size());
-  for_each_index<ConcurrencyTag>(flattenings.size(), [&](std::size_t p) { result.scales[p] = local_scale(flattenings[p]); });
+  std::vector<Flattened_patch> patches(flattened.patches.size());
+  for_each_index<ConcurrencyTag>(patches.size(), [&](std::size_t p) {
+    patches[p].patch = std::move(flattened.patches[p]);
+    patches[p].flattening = std::move(flattened.flattenings[p]);
+    patches[p].scale = local_scale(patches[p].flattening);
+  });
+  result.patches.clear();
+  for(Flattened_patch& patch : patches)
+    result.patches.push_back(std::make_shared<const Flattened_patch>(std::move(patch)));
 }
 
 } // namespace remeshing

@@ -11,6 +11,8 @@
 
 #include <CGAL/Conformal_remeshing/segment_into_poly_annuli.h>
 
+#include <CGAL/Bbox_3.h>
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -25,6 +27,140 @@ namespace CGAL {
 namespace Conformal_remeshing {
 namespace internal {
 namespace remeshing {
+
+/// A size bounded to [1/16, 1] times `target`; `target` where it is not finite.
+inline double bounded_size(double size, double target)
+{
+  return std::isfinite(size) ? (std::min)(target, (std::max)(size, target / 16.)) : target;
+}
+
+/// The size at `p` graded from a corner of size `corner_size` at `corner`: the corner's size plus
+/// `gradation` times the distance to it, at most `target`.
+inline double graded_size(const Epick::Point_3& p, const Epick::Point_3& corner, double corner_size, double target, double gradation)
+{
+  return (std::min)(target, corner_size + gradation * std::sqrt(CGAL::squared_distance(p, corner)));
+}
+
+/// Sizes bounded near a few places: `size` at each of `points`, growing by `gradation` times the
+/// distance to the nearest of them. These are the sizes for meshing again near the places where
+/// an output intersected itself (a few, a quarter target apart: see `add_if_far()`). Kept as data,
+/// not as a function, so that a patch job can tell whether they reach its patch.
+struct Local_refinement
+{
+  std::vector<Epick::Point_3> points;
+  double size = 0.;
+  double gradation = 0.5;
+
+  bool empty() const { return points.empty(); }
+
+  /// The bound at `p`; infinite when there are no places.
+  double at(const Epick::Point_3& p) const
+  {
+    double nearest = std::numeric_limits<double>::infinity();
+    for(const Epick::Point_3& q : points)
+      nearest = (std::min)(nearest, CGAL::squared_distance(p, q));
+    return points.empty() ? nearest : size + gradation * std::sqrt(nearest);
+  }
+
+  /// The places whose bound can be below `target` somewhere in `box`.
+  Local_refinement within(const Bbox_3& box, double target) const
+  {
+    Local_refinement result;
+    result.size = size;
+    result.gradation = gradation;
+    for(const Epick::Point_3& q : points)
+    {
+      double squared = 0.;
+      for(int i = 0; i < 3; ++i)
+      {
+        const double gap = (std::max)((std::max)(box.min(i) - q[i], q[i] - box.max(i)), 0.);
+        squared += gap * gap;
+      }
+      if(size + gradation * std::sqrt(squared) * (1. - 1e-12) < target) // a margin for the rounding of the distance
+        result.points.push_back(q);
+    }
+    return result;
+  }
+
+  friend bool operator==(const Local_refinement& a, const Local_refinement& b)
+  {
+    return a.points == b.points && (a.points.empty() || (a.size == b.size && a.gradation == b.gradation));
+  }
+};
+
+/// The size the user's `field` and `refinement` give at `p`, before bounding (see
+/// `bounded_size()`): the smaller of the two, infinite where neither is given.
+inline double field_size(const std::function<double(const Epick::Point_3&)>& field, const Local_refinement& refinement,
+                         const Epick::Point_3& p)
+{
+  if(refinement.empty())
+    return field ? field(p) : std::numeric_limits<double>::infinity();
+  const double local = refinement.at(p);
+  return field ? (std::min)(field(p), local) : local;
+}
+
+/// The size field of `Sizing` on one patch, as a value of its own: the sizes at the corners of
+/// each patch face, the user's field and the local refinements that reach the patch. A patch job
+/// carries it (see patch_job.h) instead of the segmentation it was computed on. Two fields of the
+/// same call compare equal (`same_sizes()`) when they give the same sizes: the user's field is
+/// one function for the whole call.
+class Patch_size_field
+{
+public:
+  typedef std::function<double(const Epick::Point_3&)> Field;
+  struct Corner
+  {
+    Epick::Point_3 point;
+    double size;
+  };
+
+  explicit Patch_size_field(double target = 0.) : target_(target) {}
+  Patch_size_field(double target, double gradation, const Field& field, const Local_refinement& refinement,
+                   std::vector<std::array<Corner, 3> > face_corners)
+    : target_(target), gradation_(gradation), field_(field), refinement_(refinement), face_corners_(std::move(face_corners))
+  {}
+
+  double target() const { return target_; }
+  bool is_uniform() const { return face_corners_.empty(); }
+
+  /// The size at `p`, a point of face `f` of the patch (see `Sizing::at()`).
+  double at(const Epick::Point_3& p, std::size_t f) const
+  {
+    if(is_uniform())
+      return target_;
+    const std::array<Corner, 3>& c = face_corners_[f];
+    return (std::min)(graded(p, c[0]), (std::min)(graded(p, c[1]), (std::min)(graded(p, c[2]), of_field(p))));
+  }
+
+private:
+  double graded(const Epick::Point_3& p, const Corner& c) const { return graded_size(p, c.point, c.size, target_, gradation_); }
+  double of_field(const Epick::Point_3& p) const
+  {
+    return field_ || !refinement_.empty() ? bounded_size(field_size(field_, refinement_, p), target_) : target_;
+  }
+
+  friend bool same_sizes(const Patch_size_field& a, const Patch_size_field& b)
+  {
+    if(a.target_ != b.target_ || a.is_uniform() != b.is_uniform())
+      return false;
+    if(a.is_uniform())
+      return true;
+    if(a.gradation_ != b.gradation_ || !(a.refinement_ == b.refinement_) || bool(a.field_) != bool(b.field_)
+       || a.face_corners_.size() != b.face_corners_.size())
+      return false;
+    for(std::size_t f = 0; f < a.face_corners_.size(); ++f)
+      for(int c = 0; c < 3; ++c)
+        if(a.face_corners_[f][c].point != b.face_corners_[f][c].point || a.face_corners_[f][c].size != b.face_corners_[f][c].size)
+          return false;
+    return true;
+  }
+
+  double target_;
+  double gradation_ = 0.5;
+  Field field_;
+  Local_refinement refinement_;
+  std::vector<std::array<Corner, 3> > face_corners_; // empty when uniform
+};
 
 /// The size at a surface point: the smallest of the uniform target, the user's field at the
 /// point, and the graded sizes of the corners of its face (each corner's size plus the gradation
@@ -47,21 +183,23 @@ public:
   /// Uniform sizing.
   Sizing(const Poly_annulus_segmentation& s, double target) : s_(s), target_(target) {}
 
-  /// `field` may be empty; `chord_error` 0 means no curvature bound.
-  Sizing(const Poly_annulus_segmentation& s, double target, const Field& field, double chord_error, double gradation = 0.5)
-    : s_(s), target_(target), field_(field), gradation_(gradation)
+  /// `field` may be empty; `chord_error` 0 means no curvature bound; `refinement` bounds the
+  /// sizes further near its places.
+  Sizing(const Poly_annulus_segmentation& s, double target, const Field& field, double chord_error,
+         const Local_refinement& refinement = Local_refinement(), double gradation = 0.5)
+    : s_(s), target_(target), field_(field), refinement_(refinement), gradation_(gradation)
   {
-    if(!field_ && !(chord_error > 0.))
+    if(!has_field() && !(chord_error > 0.))
       return;
     const Mesh& m = s.mesh;
     vertex_size_.assign(m.number_of_vertices(), target);
-    if(field_)
+    if(has_field())
       for(Vertex v : m.vertices())
-        vertex_size_[v] = bounded(field_(m.point(v)));
+        vertex_size_[v] = bounded(field_size(field_, refinement_, m.point(v)));
     if(chord_error > 0.)
       bound_by_curvature(chord_error);
     grade(gradation);
-    if(!field_ && std::all_of(vertex_size_.begin(), vertex_size_.end(), [&](double size) { return size == target_; }))
+    if(!has_field() && std::all_of(vertex_size_.begin(), vertex_size_.end(), [&](double size) { return size == target_; }))
       vertex_size_.clear(); // uniform after all: the cheaper path, and the same result
   }
 
@@ -85,6 +223,33 @@ public:
     return (std::min)(graded(p, v[0]), (std::min)(graded(p, v[1]), (std::min)(graded(p, v[2]), of_field(p))));
   }
 
+  /// The sizes on `patch`, whose faces are faces of the segmented mesh (see `Extracted_patch`).
+  Patch_size_field restricted_to(const Extracted_patch& patch) const
+  {
+    if(is_uniform())
+      return Patch_size_field(target_);
+    const Mesh& m = s_.mesh;
+    std::vector<std::array<Patch_size_field::Corner, 3> > corners(patch.segmented_face.size());
+    Bbox_3 box;
+    for(std::size_t f = 0; f < corners.size(); ++f)
+    {
+      int c = 0;
+      for(Vertex w : m.vertices_around_face(m.halfedge(patch.segmented_face[f])))
+        if(c < 3)
+        {
+          corners[f][c++] = Patch_size_field::Corner{m.point(w), vertex_size_[w]};
+          box += m.point(w).bbox();
+        }
+    }
+    Local_refinement reaching = refinement_.within(box, target_);
+    const bool at_target = std::all_of(corners.begin(), corners.end(), [&](const std::array<Patch_size_field::Corner, 3>& c) {
+      return c[0].size == target_ && c[1].size == target_ && c[2].size == target_;
+    });
+    if(!field_ && reaching.empty() && at_target)
+      return Patch_size_field(target_); // the same sizes, and equal to the patch's uniform field of other rounds
+    return Patch_size_field(target_, gradation_, field_, reaching, std::move(corners));
+  }
+
   /// The size at the point at parameter `t` in [0, 1] of the edge from `a` to `b`.
   double at(Vertex a, Vertex b, double t) const
   {
@@ -98,15 +263,12 @@ public:
 private:
   double graded(const Epick::Point_3& p, Vertex corner) const
   {
-    return (std::min)(target_, vertex_size_[corner] + gradation_ * std::sqrt(CGAL::squared_distance(p, s_.mesh.point(corner))));
+    return graded_size(p, s_.mesh.point(corner), vertex_size_[corner], target_, gradation_);
   }
 
-  double of_field(const Epick::Point_3& p) const { return field_ ? bounded(field_(p)) : target_; }
-
-  double bounded(double size) const
-  {
-    return std::isfinite(size) ? (std::min)(target_, (std::max)(size, target_ / 16.)) : target_;
-  }
+  bool has_field() const { return field_ || !refinement_.empty(); }
+  double of_field(const Epick::Point_3& p) const { return has_field() ? bounded(field_size(field_, refinement_, p)) : target_; }
+  double bounded(double size) const { return bounded_size(size, target_); }
 
   void bound_by_curvature(double chord_error)
   {
@@ -176,25 +338,10 @@ private:
   const Poly_annulus_segmentation& s_;
   double target_;
   Field field_;
+  Local_refinement refinement_;
   double gradation_ = 0.5;
   std::vector<double> vertex_size_; // empty when uniform
 };
-
-/// A size field that is `size` at each of `points` and grows by `gradation` times the distance
-/// to the nearest of them, bounded by `field` where that is given: the sizes for meshing again
-/// near the places where an output intersected itself. (The places are few, a quarter target
-/// apart: see `add_if_far()`.)
-inline Sizing::Field shorter_near(const Sizing::Field& field, const std::vector<Epick::Point_3>& points, double size,
-                                  double gradation = 0.5)
-{
-  return [=](const Epick::Point_3& p) {
-    double nearest = std::numeric_limits<double>::infinity();
-    for(const Epick::Point_3& q : points)
-      nearest = (std::min)(nearest, CGAL::squared_distance(p, q));
-    const double graded = size + gradation * std::sqrt(nearest);
-    return field ? (std::min)(field(p), graded) : graded;
-  };
-}
 
 /// Appends `p` to `points` unless one of them is within `spacing` of it.
 inline void add_if_far(std::vector<Epick::Point_3>& points, const Epick::Point_3& p, double spacing)

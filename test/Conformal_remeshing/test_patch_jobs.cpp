@@ -1,0 +1,153 @@
+// Patch jobs: each patch meshed from one value that holds all it reads (patch_job.h), and the
+// meshing stage's reuse of the results of equal jobs.
+
+#include "stage_tests.h"
+
+namespace {
+
+// The shipped perforated plate, segmented and flattened, its boundary curves sampled at the
+// default target length.
+struct Plate_patches
+{
+  RM::Flattened_surface surface;
+  std::unique_ptr<RM::Sizing> sizing;
+  RM::Curve_samples samples;
+  std::vector<std::vector<std::size_t> > neighbours;
+  RM::Patch_meshing meshing;
+
+  explicit Plate_patches(const std::vector<int>& halvings = {})
+  {
+    Mesh plate;
+    EXPECT_TRUE(CGAL::IO::read_polygon_mesh(std::string(CONFORMAL_REMESHING_EXAMPLE_DATA) + "/perforated_plate.off", plate));
+    const auto np = CGAL::parameters::default_values();
+    const RM::Remeshing_options options = RM::remeshing_options(plate, np);
+    CR::Remeshing_report report;
+    CR::Remeshing_statistics statistics;
+    RM::segment_and_flatten<CGAL::Sequential_tag>(plate, options, np, CR::internal::Time_limit::from(np, "test"),
+                                                  [](const std::string&) {}, report, statistics, surface);
+    sizing.reset(new RM::Sizing(surface.segmentation, options.target_edge_length));
+    samples = RM::sample_boundary_curves(surface.segmentation, *sizing, options.corner_angle, halvings);
+    neighbours = RM::chord_neighbours(samples);
+    meshing.minimum_angle = options.minimum_angle;
+    meshing.frontal = options.frontal;
+  }
+
+  RM::Patch_job job(std::size_t p) const
+  {
+    return RM::patch_job(p, surface.patches, samples, neighbours, *sizing, meshing, RM::Sample_pairs());
+  }
+};
+
+void expect_same_mesh(const RM::Remeshed_patch& a, const RM::Remeshed_patch& b)
+{
+  EXPECT_EQ(a.boundary_ids, b.boundary_ids);
+  EXPECT_EQ(a.triangles, b.triangles);
+  EXPECT_EQ(a.interior_points, b.interior_points);
+  EXPECT_EQ(a.interior_faces, b.interior_faces);
+  EXPECT_EQ(a.chords_not_glued, b.chords_not_glued);
+  EXPECT_EQ(a.sample_diagonals, b.sample_diagonals);
+}
+
+} // namespace
+
+TEST(PatchJobs, AJobReadsNothingButItself)
+{
+  // The jobs outlive the segmentation, the shared samples and the size field they were made
+  // from, and give the same meshes as while those lived (under the sanitizers, a job that
+  // still read them would fail here).
+  std::vector<RM::Patch_job> jobs;
+  std::vector<RM::Remeshed_patch> meshed_while_alive;
+  {
+    const Plate_patches plate;
+    ASSERT_GT(plate.surface.patches.size(), 1u);
+    for(std::size_t p = 0; p < plate.surface.patches.size(); ++p)
+    {
+      jobs.push_back(plate.job(p));
+      meshed_while_alive.push_back(RM::mesh_patch(jobs.back()));
+    }
+  }
+  std::size_t triangles = 0;
+  for(std::size_t p = 0; p < jobs.size(); ++p)
+  {
+    const RM::Remeshed_patch again = RM::mesh_patch(jobs[p]);
+    expect_same_mesh(again, meshed_while_alive[p]);
+    EXPECT_TRUE(again.chords_not_glued.empty());
+    triangles += again.triangles.size();
+  }
+  EXPECT_GT(triangles, 1000u);
+}
+
+TEST(PatchJobs, AnEqualJobOnRenumberedSamplesHasTheSameMeshRenumbered)
+{
+  // One curve sampled twice as densely renumbers the samples after it: the patches away from it
+  // have equal jobs, whose earlier meshes, renumbered, are what running them again gives; the
+  // patches along it do not.
+  const Plate_patches coarse;
+  std::vector<int> halvings(coarse.samples.number_of_curves, 0);
+  halvings[0] = 1;
+  const Plate_patches finer(halvings);
+  ASSERT_GT(finer.samples.points.size(), coarse.samples.points.size());
+  std::size_t equal = 0, different = 0;
+  for(std::size_t p = 0; p < coarse.surface.patches.size(); ++p)
+  {
+    // Both were segmented and flattened separately: give them the same surface to compare.
+    RM::Patch_job before = coarse.job(p), after = finer.job(p);
+    after.surface = before.surface;
+    if(!RM::same_meshing_inputs(before, after))
+    {
+      ++different;
+      continue;
+    }
+    ++equal;
+    EXPECT_NE(before.boundary.number_of_shared_samples, after.boundary.number_of_shared_samples);
+    expect_same_mesh(RM::renumbered(RM::mesh_patch(before), before.boundary, after.boundary), RM::mesh_patch(after));
+  }
+  EXPECT_GT(equal, 0u);
+  EXPECT_GT(different, 0u);
+}
+
+TEST(PatchJobs, JobsDifferWhenTheirDiagonalsToSplitDo)
+{
+  const Plate_patches plate;
+  const RM::Patch_job job = plate.job(0);
+  RM::Patch_job split = job;
+  ASSERT_GE(job.boundary.sample_ids.size(), 3u);
+  split.diagonals_to_split.insert(std::minmax(job.boundary.sample_ids[0], job.boundary.sample_ids[2]));
+  EXPECT_TRUE(RM::same_meshing_inputs(job, job));
+  EXPECT_FALSE(RM::same_meshing_inputs(job, split));
+  // A diagonal between samples the patch does not have does not change its meshing.
+  RM::Patch_job elsewhere = job;
+  elsewhere.diagonals_to_split.insert(std::make_pair(plate.samples.points.size() + 1, plate.samples.points.size() + 2));
+  EXPECT_TRUE(RM::same_meshing_inputs(job, elsewhere));
+}
+
+TEST(PatchJobs, JobsDifferWhereALocalRefinementReachesTheirPatch)
+{
+  // Meshing again finer near a place where the output intersected itself changes the jobs of
+  // the patches that the smaller sizes reach, even where their boundary samples stay, and only
+  // those.
+  const Plate_patches plate;
+  const double h = plate.sizing->target();
+  const CR::Extracted_patch& first = plate.surface.patches[0]->patch;
+  ASSERT_FALSE(first.segmented_face.empty());
+  const auto& m = plate.surface.segmentation.mesh;
+  RM::Local_refinement refinement;
+  refinement.points.push_back(m.point(m.target(m.halfedge(first.segmented_face.front()))));
+  refinement.size = h / 4.;
+  const RM::Sizing finer(plate.surface.segmentation, h, RM::Sizing::Field(), 0., refinement);
+  std::size_t reached = 0, unreached = 0;
+  for(std::size_t p = 0; p < plate.surface.patches.size(); ++p)
+  {
+    RM::Patch_job refined = plate.job(p);
+    refined.size = finer.restricted_to(plate.surface.patches[p]->patch);
+    if(RM::same_meshing_inputs(plate.job(p), refined))
+      ++unreached;
+    else
+      ++reached;
+  }
+  EXPECT_GE(reached, 1u);    // the patch holding the place at least
+  EXPECT_GE(unreached, 1u);  // the plate's patches far from it
+  RM::Patch_job refined = plate.job(0);
+  refined.size = finer.restricted_to(first);
+  EXPECT_FALSE(RM::same_meshing_inputs(plate.job(0), refined));
+}
