@@ -73,10 +73,12 @@ const char* usage =
   "                          default frontal insertion places them in rows of nearly equilateral triangles first)\n"
   "  --chord-error E         shorter edges where the surface bends, so that chords deviate from it by at most E\n"
   "                          (input units; down to 1/16 of the target length; default 0: uniform)\n"
-  "  --no-repair             refuse polygons, inconsistent orientation, isolated vertices and cracks (by default\n"
-  "                          polygons are triangulated, faces oriented, isolated vertices removed and borders along\n"
-  "                          the same points stitched first)\n"
-  "Any orientable, edge-manifold triangle mesh: closed or open, any genus, several components.\n"
+  "  --no-repair             refuse polygons, inconsistent orientation, isolated vertices, cracks, non-manifold\n"
+  "                          edges and vertices and degenerate faces (by default polygons are triangulated, faces\n"
+  "                          oriented, isolated vertices removed, borders along the same points stitched,\n"
+  "                          non-manifold edges and vertices cut apart and zero-area faces removed first)\n"
+  "Any orientable triangle mesh: closed or open, any genus, several components; vertices at the same point stay\n"
+  "distinct.\n"
   "exit code: 0 success, 1 the input cannot be remeshed, 2 the tool could not run, 3 time limit exceeded\n";
 
 struct Options
@@ -246,9 +248,17 @@ int main(int argc, char** argv)
       = CR::read_and_check_mesh(o.input, input, o.repair ? CR::Input_repairs::all() : CR::Input_repairs(), repaired);
     if(repaired.any())
       progress("repaired the input: " + repaired.summary());
-    if(!checks.is_valid())
+    // What the library repairs itself (degenerate faces) or takes as it is (coincident vertices).
+    CR::Mesh_check_report left = checks;
+    left.defects.erase(std::remove_if(left.defects.begin(), left.defects.end(),
+                                      [&](const CR::Defect_summary& d) {
+                                        return d.defect == CR::Mesh_defect::DUPLICATED_VERTEX
+                                               || (o.repair && d.defect == CR::Mesh_defect::DEGENERATE_FACE);
+                                      }),
+                       left.defects.end());
+    if(!left.is_valid())
     {
-      std::cerr << "remesh_conformal: invalid input '" << o.input << "': " << checks.summary()
+      std::cerr << "remesh_conformal: invalid input '" << o.input << "': " << left.summary()
                 << (repaired.any() ? " (after the repairs: " + repaired.summary() + ")" : std::string()) << "\n";
       return 1;
     }
@@ -336,7 +346,8 @@ int main(int argc, char** argv)
   try
   {
     progress("remeshing " + std::to_string(input.number_of_faces()) + " faces");
-    const auto limited = CR::parameters::statistics(std::ref(statistics), CR::parameters::maximum_running_time(remaining_time(), np));
+    const auto limited = CR::parameters::repair_input(
+      o.repair, CR::parameters::statistics(std::ref(statistics), CR::parameters::maximum_running_time(remaining_time(), np)));
     report = o.sequential ? CR::remesh_conformal<CGAL::Sequential_tag>(input, output, limited)
                           : CR::remesh_conformal<CGAL::Parallel_if_available_tag>(input, output, limited);
   }
@@ -368,7 +379,11 @@ int main(int argc, char** argv)
       json.key("input_repairs").begin_object().field("triangulated_polygons", repaired.triangulated_polygons)
           .field("triangles_from_polygons", repaired.triangles_from_polygons).field("reoriented_faces", repaired.reoriented_faces)
           .field("removed_isolated_vertices", repaired.removed_isolated_vertices)
-          .field("stitched_vertices", repaired.stitched_vertices).end_object();
+          .field("stitched_vertices", repaired.stitched_vertices).field("split_non_manifold_vertices", repaired.split_vertices
+                                                                                           + report.input.split_non_manifold_vertices)
+          .field("removed_degenerate_faces", report.input.removed_degenerate_faces)
+          .field("coincident_vertices", report.input.coincident_vertices)
+          .field("input_crosses_itself", report.input_crosses_itself).end_object();
       json.key("seconds").begin_object().field("segmentation", statistics.seconds_segmentation)
           .field("flattening", statistics.seconds_flattening).field("meshing_and_pull_back", statistics.seconds_meshing_stage)
           .field("gluing", statistics.seconds_gluing).field("ricci_flow_thread_seconds", statistics.seconds_ricci_flow)
@@ -424,7 +439,8 @@ int main(int argc, char** argv)
             << after.skewness.mean << " (input " << before.skewness.mean << ")\n"
             << "  Hausdorff distance to / from the input: " << fidelity.relative_distance_to_reference << " / "
             << fidelity.relative_distance_from_reference << " x diagonal; self-intersections: "
-            << (fidelity.self_intersects ? "YES" : "none") << "\n"
+            << (fidelity.self_intersects ? (report.input_crosses_itself ? "YES (the input crosses itself too)" : "YES") : "none")
+            << "\n"
             << "  " << report.number_of_patches << " patches (" << report.plane_cuts << " plane cuts, "
             << report.feature_edges << " feature edges" << (report.features_dropped ? ", dropped: no flattening with them" : "")
             << "); seconds: segmentation " << statistics.seconds_segmentation

@@ -12,13 +12,11 @@
 #include <CGAL/Conformal_remeshing/Remeshing_report.h>
 #include <CGAL/Conformal_remeshing/parameters.h>
 #include <CGAL/Conformal_remeshing/internal/time_limit.h>
-#include <CGAL/Conformal_remeshing/internal/remeshing/mesh_and_glue.h>
+#include <CGAL/Conformal_remeshing/internal/remeshing/prepare_input.h>
+#include <CGAL/Conformal_remeshing/internal/remeshing/remesh_prepared.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/remeshing_options.h>
-#include <CGAL/Conformal_remeshing/internal/remeshing/segment_and_flatten.h>
-#include <CGAL/Conformal_remeshing/internal/remeshing/surface_locations.h>
 
 #include <CGAL/Named_function_parameters.h>
-#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/tags.h>
 
@@ -109,6 +107,11 @@ namespace Conformal_remeshing {
 ///     \cgalParamType{`int`}
 ///     \cgalParamDefault{`5`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{repair_input}
+///     \cgalParamDescription{repair what keeps the input from being remeshed but leaves its surface as it is: non-manifold vertices are split (CGAL's `duplicate_non_manifold_vertices()`: each fan of faces gets a vertex of its own) and faces of zero area are collapsed or flipped away (CGAL's `remove_degenerate_faces()`); the counts are in `Remeshing_report`. Off, such an input is refused. Vertices at the same point as another are never a defect: they stay distinct points of the surface}
+///     \cgalParamType{`bool`}
+///     \cgalParamDefault{`true`}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{features_fallback}
 ///     \cgalParamDescription{when a patch cannot be flattened even after bisection, and the segmentation has sharp features, segment again without them (and say so in `Remeshing_report::features_dropped`), rather than fail. On scans the features angle takes noise for sharp edges, which cut the surface into patches whose conformal scale varies by many orders of magnitude even after the bisections}
 ///     \cgalParamType{`bool`}
@@ -168,8 +171,8 @@ namespace Conformal_remeshing {
 /// \param output receives the new mesh (cleared first)
 /// \param np the named parameters above
 /// \returns what happened (the timings and counters go to the `statistics` output)
-/// \throws Error with `Error_code::INVALID_INPUT` when the input is not a valid, manifold,
-///         orientable triangle mesh or a parameter is out of range, and with the flattening's
+/// \throws Error with `Error_code::INVALID_INPUT` when the input is not an orientable triangle
+///         mesh that the repairs above make a valid manifold, or a parameter is out of range, and with the flattening's
 ///         code when a patch cannot be flattened even after bisection, and without sharp
 ///         features if `features_fallback` is on (the message says why);
 ///         with `Error_code::TIME_LIMIT_EXCEEDED` past the `maximum_running_time`; with
@@ -194,26 +197,29 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
   progress("checking the input");
   const stages::Remeshing_options options = stages::remeshing_options(input, np);
   report.target_edge_length = options.target_edge_length;
+  const bool repair = choose_parameter(get_parameter(np, internal_np::repair_input), true);
+  stages::Prepared_input prepared = stages::prepare_input(input, np, repair, report.input);
+  if(report.input.repaired())
+    progress("repaired the input: " + report.input.summary());
+  if(report.input.coincident_vertices > 0)
+    progress("keeping " + std::to_string(report.input.coincident_vertices) + " vertices at the same point as others as distinct vertices");
 
-  stages::Flattened_surface flattened;
-  stages::segment_and_flatten<ConcurrencyTag>(input, options, np, time_limit, progress, report, statistics, flattened);
-  const stages::Flattened_surface& surface = flattened; // read, never changed, from here on
-
-  // Asked only when the output intersects itself, once.
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(vertex_point, input));
-  int input_intersects = -1; // not known yet
-  const std::function<bool()> input_self_intersects = [&]() {
-    if(input_intersects < 0)
-      input_intersects = Polygon_mesh_processing::does_self_intersect<ConcurrencyTag>(input, CGAL::parameters::vertex_point_map(vpm));
-    return input_intersects == 1;
-  };
-  stages::Glued_output<TriangleMesh> glued = stages::mesh_and_glue_with_fallback<ConcurrencyTag, TriangleMesh>(
-    surface, options, input_self_intersects, time_limit, progress, report, statistics);
-
-  output = std::move(glued.mesh);
-  if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::vertex_locations_t>::value)
-    CGAL::parameters::get_parameter_reference(np, internal_np::vertex_locations) =
-      stages::surface_locations(input, np, surface.segmentation, glued.vertex_points, glued.vertex_faces);
+  constexpr bool with_locations =
+    !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::vertex_locations_t>::value;
+  stages::Remeshed_output<TriangleMesh> remeshed;
+  if(!prepared.is_copy)
+    remeshed = stages::remesh_prepared<ConcurrencyTag, TriangleMesh>(input, np, options, time_limit, progress, report, statistics,
+                                                                     with_locations);
+  else
+  {
+    remeshed = stages::remesh_prepared<ConcurrencyTag, TriangleMesh>(
+      prepared.mesh, stages::parameters_of_copy(prepared, input, np), options, time_limit, progress, report, statistics, false);
+    if(with_locations)
+      remeshed.locations = stages::locate_on_input(input, np, remeshed.points);
+  }
+  output = std::move(remeshed.mesh);
+  if constexpr(with_locations)
+    CGAL::parameters::get_parameter_reference(np, internal_np::vertex_locations) = std::move(remeshed.locations);
   if constexpr(!CGAL::parameters::is_default_parameter<NamedParameters, internal_np::statistics_t>::value)
     CGAL::parameters::get_parameter_reference(np, internal_np::statistics) = std::move(statistics);
   report.output_vertices = num_vertices(output);

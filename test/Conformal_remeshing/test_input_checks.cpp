@@ -436,10 +436,13 @@ TEST(InputRepairs, WhatCannotBeRepairedIsStillReported)
   EXPECT_EQ(moebius.checks.count(CR::Mesh_defect::NON_ORIENTABLE), 1u) << moebius.checks.summary();
   EXPECT_FALSE(moebius.repaired.any()) << moebius.repaired.summary();
   EXPECT_EQ(moebius.repaired.summary(), "nothing repaired");
-  // A non-manifold edge is not repaired either.
+  // A non-manifold edge is cut apart: each of its three faces gets its own copy of it, and the
+  // copies are not stitched back.
   const Repaired_read fin = read_repaired(test_data("non_manifold_edge.off"));
-  EXPECT_GT(fin.checks.count(CR::Mesh_defect::NON_MANIFOLD_EDGE), 0u) << fin.checks.summary();
-  EXPECT_EQ(fin.repaired.reoriented_faces, 0u);
+  EXPECT_EQ(fin.checks.count(CR::Mesh_defect::NON_MANIFOLD_EDGE), 0u) << fin.checks.summary();
+  EXPECT_EQ(fin.repaired.split_vertices, 4u) << fin.repaired.summary();
+  EXPECT_EQ(fin.repaired.stitched_vertices, 0u);
+  EXPECT_TRUE(fin.checks.is_manifold_surface()) << fin.checks.summary();
 
   // Polygons CGAL's triangulation cannot cut are left as they are: one with a corner at NaN,
   // one whose corners are collinear, one that visits a vertex twice; a good square is cut.

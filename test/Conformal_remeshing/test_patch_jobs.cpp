@@ -123,31 +123,37 @@ TEST(PatchJobs, JobsDifferWhenTheirDiagonalsToSplitDo)
 
 TEST(PatchJobs, JobsDifferWhereALocalRefinementReachesTheirPatch)
 {
-  // Meshing again finer near a place where the output intersected itself changes the jobs of
-  // the patches that the smaller sizes reach, even where their boundary samples stay, and only
-  // those.
+  // Meshing again finer near one more place where the output intersected itself changes the
+  // jobs of the patches that the smaller sizes reach, even where their boundary samples stay,
+  // and only those.
   const Plate_patches plate;
   const double h = plate.sizing->target();
-  const CR::Extracted_patch& first = plate.surface.patches[0]->patch;
-  ASSERT_FALSE(first.segmented_face.empty());
   const auto& m = plate.surface.segmentation.mesh;
-  RM::Local_refinement refinement;
-  refinement.points.push_back(m.point(m.target(m.halfedge(first.segmented_face.front()))));
-  refinement.size = h / 4.;
-  const RM::Sizing finer(plate.surface.segmentation, h, RM::Sizing::Field(), 0., refinement);
+  const auto place_in = [&](std::size_t p) {
+    return m.point(m.target(m.halfedge(plate.surface.patches[p]->patch.segmented_face.front())));
+  };
+  ASSERT_GE(plate.surface.patches.size(), 2u);
+  RM::Local_refinement one, two;
+  one.size = two.size = h / 4.;
+  one.points = {place_in(0)};
+  two.points = {place_in(0), place_in(plate.surface.patches.size() - 1)};
+  const RM::Sizing first(plate.surface.segmentation, h, RM::Sizing::Field(), 0., one);
+  const RM::Sizing second(plate.surface.segmentation, h, RM::Sizing::Field(), 0., two);
   std::size_t reached = 0, unreached = 0;
   for(std::size_t p = 0; p < plate.surface.patches.size(); ++p)
   {
-    RM::Patch_job refined = plate.job(p);
-    refined.size = finer.restricted_to(plate.surface.patches[p]->patch);
-    if(RM::same_meshing_inputs(plate.job(p), refined))
+    RM::Patch_job before = plate.job(p), after = plate.job(p);
+    before.size = first.restricted_to(plate.surface.patches[p]->patch);
+    after.size = second.restricted_to(plate.surface.patches[p]->patch);
+    EXPECT_TRUE(RM::same_meshing_inputs(before, before));
+    if(RM::same_meshing_inputs(before, after))
       ++unreached;
     else
       ++reached;
   }
-  EXPECT_GE(reached, 1u);    // the patch holding the place at least
-  EXPECT_GE(unreached, 1u);  // the plate's patches far from it
-  RM::Patch_job refined = plate.job(0);
-  refined.size = finer.restricted_to(first);
-  EXPECT_FALSE(RM::same_meshing_inputs(plate.job(0), refined));
+  EXPECT_GE(reached, 1u);   // the patch holding the new place at least
+  EXPECT_GE(unreached, 1u); // the plate's patches far from it
+  RM::Patch_job uniform = plate.job(0), refined = plate.job(0);
+  refined.size = first.restricted_to(plate.surface.patches[0]->patch);
+  EXPECT_FALSE(RM::same_meshing_inputs(uniform, refined));
 }

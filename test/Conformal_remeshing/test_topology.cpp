@@ -200,9 +200,11 @@ TEST(RemeshAnyTopology, WhereTheOutputIntersectsItselfItIsMeshedAgainFiner)
                                      CR::parameters::statistics(std::ref(statistics),
                                                                 CR::parameters::progress([&](const std::string& stage) { stages.push_back(stage); }))));
   EXPECT_GE(report.self_intersection_refinements, 1u);
-  // Each round of meshing again keeps the meshes of the patches away from the crossings.
-  EXPECT_GT(statistics.patch_jobs_kept, 0u);
-  EXPECT_LT(statistics.patch_jobs_run, (report.self_intersection_refinements + 1) * report.number_of_patches);
+  // The first round of meshing again meshes every patch with the refined size field; each later
+  // round keeps the meshes of the patches that its new places do not reach.
+  EXPECT_LE(statistics.patch_jobs_run, (report.self_intersection_refinements + 1) * report.number_of_patches);
+  if(report.self_intersection_refinements >= 2)
+    EXPECT_GT(statistics.patch_jobs_kept, 0u);
   EXPECT_TRUE(std::any_of(stages.begin(), stages.end(), [](const std::string& s) {
     return s.find("the output intersects itself") != std::string::npos && s.find("meshing again with edges of 1/2") != std::string::npos;
   }));

@@ -7,6 +7,7 @@
 #ifndef CGAL_CONFORMAL_REMESHING_REMESHING_REPORT_H
 #define CGAL_CONFORMAL_REMESHING_REMESHING_REPORT_H
 
+#include <CGAL/Conformal_remeshing/Input_preparation_report.h>
 #include <CGAL/Conformal_remeshing/conformal_flatten.h>
 
 #include <array>
@@ -73,6 +74,10 @@ struct Meshing_phase_seconds
 struct Remeshing_report
 {
   double target_edge_length = 0.; ///< the target edge length used, in input units
+  Input_preparation_report input; ///< what the input preparation repaired and kept
+  /// the input has faces that cross (more than touch at coincident vertices): found when the
+  /// output crossed itself, which is then not refused, each sheet having been remeshed alone
+  bool input_crosses_itself = false;
   std::size_t number_of_patches = 0;
   std::size_t plane_cuts = 0;       ///< cuts by planes: given, and bisections of the segmentation
   std::size_t patch_bisections = 0; ///< patches bisected because their flattening failed or stretched
@@ -94,6 +99,7 @@ struct Remeshing_report
   std::size_t split_diagonals = 0; ///< times a patch split an edge between two samples that another patch also has
   std::size_t output_vertices = 0;
   std::size_t output_faces = 0;
+
 };
 
 /// \ingroup PkgConformalRemeshingRef

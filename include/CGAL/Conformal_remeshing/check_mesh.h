@@ -57,6 +57,18 @@ struct Mesh_check_report
   /// `true` if no defect was found: a valid, manifold, orientable triangle mesh.
   bool is_valid() const { return defects.empty(); }
 
+  /// `true` if the only defect found, if any, is vertices at the same point as others: a valid,
+  /// manifold, orientable triangle mesh whose distinct vertices may share points (two holes that
+  /// touch at a corner, a seam whose sides were not merged). Such a mesh is remeshed and
+  /// flattened as it is, its coincident vertices kept distinct.
+  bool is_manifold_surface() const
+  {
+    for(const Defect_summary& s : defects)
+      if(s.defect != Mesh_defect::DUPLICATED_VERTEX)
+        return false;
+    return true;
+  }
+
   /// How many elements have defect `d` (0 if none).
   std::size_t count(Mesh_defect d) const
   {

@@ -460,7 +460,7 @@ Mesh_check_report check_patch(const TriangleMesh& mesh, const NamedParameters& n
   Mesh_check_report checks = check_mesh(mesh, np);
   // Two vertices at one place are fine here: a patch cut from a surface may touch itself at a
   // vertex, which its mesh has twice. Every other defect is not.
-  if(checks.defects.size() > std::size_t(checks.count(Mesh_defect::DUPLICATED_VERTEX) > 0))
+  if(!checks.is_manifold_surface())
     throw Error(Error_code::INVALID_INPUT, "conformal_flatten: invalid input mesh: " + checks.summary());
   if(checks.components.size() != 1)
     throw Error(Error_code::INVALID_INPUT, "conformal_flatten: the mesh has " + std::to_string(checks.components.size())

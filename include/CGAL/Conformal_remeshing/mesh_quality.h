@@ -9,6 +9,7 @@
 #define CGAL_CONFORMAL_REMESHING_MESH_QUALITY_H
 
 #include <CGAL/Conformal_remeshing/Error.h>
+#include <CGAL/Conformal_remeshing/internal/crossing_faces.h>
 #include <CGAL/Conformal_remeshing/internal/parallel_for_each_index.h>
 #include <CGAL/Conformal_remeshing/internal/well_shaped_cover.h>
 
@@ -325,7 +326,8 @@ struct Reference_comparison
   double relative_distance_from_reference = 0.;
   /// area of the mesh over area of the reference
   double area_ratio = 0.;
-  /// whether the mesh (not the reference) has intersecting faces, by exact predicates
+  /// whether the mesh (not the reference) has crossing faces, by exact predicates (faces that only
+  /// touch at distinct vertices of one point, as the reference's may, are a contact, not a crossing)
   bool self_intersects = false;
   /// where the distances are largest: the sample of the mesh farthest from the reference, and
   /// the sample of the reference farthest from the mesh
@@ -596,7 +598,7 @@ Reference_comparison compare_to_reference(const TriangleMesh& mesh, const Triang
   const double reference_area = CGAL::to_double(PMP::area(reference));
   result.area_ratio = reference_area > 0. ? CGAL::to_double(PMP::area(mesh)) / reference_area
                                           : std::numeric_limits<double>::infinity();
-  result.self_intersects = PMP::does_self_intersect<Concurrency_tag>(mesh);
+  result.self_intersects = internal::has_crossing_faces<Concurrency_tag>(mesh);
   return result;
 }
 

@@ -650,8 +650,9 @@ inline bool bisect_patch(Poly_annulus_segmentation& s, const std::vector<Poly_an
 /// \cgalNamedParamsEnd
 ///
 /// \throws Error with `Error_code::INVALID_INPUT` when the mesh is not a valid, manifold,
-///         orientable triangle mesh (the message names the defect and one example), or when a
-///         piece cannot be made a poly-annulus.
+///         orientable triangle mesh (the message names the defect and one example; vertices at
+///         the same point are accepted as distinct, see `Mesh_check_report::is_manifold_surface()`),
+///         or when a piece cannot be made a poly-annulus.
 template <typename TriangleMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
 void segment_into_poly_annuli(const TriangleMesh& input, Poly_annulus_segmentation& s,
                               const NamedParameters& np = CGAL::parameters::default_values())
@@ -664,7 +665,7 @@ void segment_into_poly_annuli(const TriangleMesh& input, Poly_annulus_segmentati
   typedef Poly_annulus_segmentation::Face Face;
 
   const Mesh_check_report checks = check_mesh(input, np);
-  if(!checks.is_valid())
+  if(!checks.is_manifold_surface())
     throw Error(Error_code::INVALID_INPUT, "invalid input mesh: " + checks.summary());
 
   // --- a copy that remembers the input faces -------------------------------------------------

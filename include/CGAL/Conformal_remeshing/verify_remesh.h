@@ -18,6 +18,8 @@
 #include <CGAL/Kernel_traits.h>
 #include <CGAL/Named_function_parameters.h>
 #include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/Conformal_remeshing/internal/crossing_faces.h>
+#include <CGAL/Conformal_remeshing/internal/remeshing/prepare_input.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -293,8 +295,8 @@ void check_output_mesh(Remesh_verification& v, const OutputMesh& output)
   // CGAL's structural check counts an isolated vertex as broken; the defect list reports it.
   v.valid_triangle_mesh = c.count(Mesh_defect::EMPTY_MESH) == 0 && c.count(Mesh_defect::INVALID_VERTEX_INDEX) == 0
                           && finite && c.count(Mesh_defect::NON_TRIANGLE_FACE) == 0
-                          && c.count(Mesh_defect::DEGENERATE_FACE) == 0 && c.count(Mesh_defect::DUPLICATED_VERTEX) == 0
-                          && c.count(Mesh_defect::ISOLATED_VERTEX) == 0 && is_valid_polygon_mesh(output);
+                          && c.count(Mesh_defect::DEGENERATE_FACE) == 0 && c.count(Mesh_defect::ISOLATED_VERTEX) == 0
+                          && is_valid_polygon_mesh(output); // distinct vertices may share a point, as the input's do
   v.manifold = c.count(Mesh_defect::NON_MANIFOLD_EDGE) == 0 && c.count(Mesh_defect::NON_MANIFOLD_VERTEX) == 0
                && c.count(Mesh_defect::INCONSISTENT_ORIENTATION) == 0 && c.count(Mesh_defect::NON_ORIENTABLE) == 0;
 }
@@ -305,8 +307,9 @@ void check_self_intersections(Remesh_verification& v, const OutputMesh& output)
 {
   typedef typename boost::graph_traits<OutputMesh>::face_descriptor output_face_descriptor;
   namespace PMP = CGAL::Polygon_mesh_processing;
-  std::vector<std::pair<output_face_descriptor, output_face_descriptor> > pairs;
-  PMP::self_intersections<Concurrency_tag>(output, std::back_inserter(pairs));
+  // Faces that only touch at distinct vertices of one point are a contact, not a crossing.
+  const std::vector<std::pair<output_face_descriptor, output_face_descriptor> > pairs =
+    internal::crossing_face_pairs<Concurrency_tag>(output);
   v.self_intersections_checked = true;
   // A pair (f, f) stands for a degenerate face, which the mesh checks already report.
   v.self_intersecting_face_pairs = std::size_t(std::count_if(pairs.begin(), pairs.end(),
@@ -414,6 +417,28 @@ void check_vertex_locations(Remesh_verification& v, const InputMesh& input, cons
 
 } // namespace internal
 
+namespace internal {
+namespace verification {
+
+// Every check of verify_remesh() but the locations, with `reference` as the input.
+template <typename Concurrency_tag, typename Kernel, typename ReferenceMesh, typename OutputMesh, typename NamedParameters>
+void verify_against_reference(Remesh_verification& v, const ReferenceMesh& reference, const OutputMesh& output,
+                              const NamedParameters& np)
+{
+  const Mesh_check_report reference_checks = check_reference_mesh(reference);
+  check_reference_face_sizes<Kernel>(reference);
+  const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(reference);
+  set_distance_tolerance(v, box, np);
+  check_output_mesh(v, output);
+  if(v.valid_triangle_mesh)
+    check_self_intersections<Concurrency_tag>(v, output);
+  check_topology(v, reference_checks);
+  check_distances_to_input<Kernel>(v, reference, output, box);
+}
+
+} // namespace verification
+} // namespace internal
+
 /// \ingroup PkgConformalRemeshingRef
 /// Verifies that `output` is a faithful remeshing of `input`, independently of how it was made:
 ///
@@ -471,11 +496,14 @@ void check_vertex_locations(Remesh_verification& v, const InputMesh& input, cons
 ///
 /// \returns a report with one flag per check and the counts of the failures; `is_valid()` says
 ///          whether every check holds and `summary()` says it in one line.
-/// \throws Error with `Error_code::INVALID_INPUT` if `input` cannot serve as a reference: empty,
-///         not a triangle mesh, with non-finite coordinates, degenerate faces, faces whose
-///         squared edge lengths or area underflow or overflow in double precision, a
-///         bounding-box diagonal above 1e70, or without a topology (non-manifold vertices); or
-///         if a tolerance is negative or not finite.
+/// An input with non-manifold vertices or degenerate faces is compared, for the topology and the
+/// distances, with its copy repaired as `remesh_conformal()` repairs it (see its `repair_input`).
+///
+/// \throws Error with `Error_code::INVALID_INPUT` if `input` cannot serve as a reference even
+///         after those repairs: empty, not a triangle mesh, with non-finite coordinates, faces
+///         whose squared edge lengths or area underflow or overflow in double precision, a
+///         bounding-box diagonal above 1e70, or non-manifold edges; or if a tolerance is negative
+///         or not finite.
 template <typename Concurrency_tag = CGAL::Parallel_if_available_tag, typename InputMesh, typename OutputMesh,
           typename NamedParameters = CGAL::parameters::Default_named_parameters>
 Remesh_verification verify_remesh(const InputMesh& input, const OutputMesh& output,
@@ -487,18 +515,19 @@ Remesh_verification verify_remesh(const InputMesh& input, const OutputMesh& outp
   namespace PMP = CGAL::Polygon_mesh_processing;
   namespace verification = internal::verification;
 
-  const Mesh_check_report input_checks = verification::check_reference_mesh(input);
-  verification::check_reference_face_sizes<Kernel>(input);
-
+  // An input with non-manifold vertices or degenerate faces is compared, for its topology and
+  // distances, with the copy that remesh_conformal() repairs and remeshes; the locations refer to
+  // the input itself.
+  const Mesh_check_report checks = check_mesh(input);
   Remesh_verification v;
-  const CGAL::Bbox_3 box = PMP::bbox(input);
-  verification::set_distance_tolerance(v, box, np);
-
-  verification::check_output_mesh(v, output);
-  if(v.valid_triangle_mesh)
-    verification::check_self_intersections<Concurrency_tag>(v, output);
-  verification::check_topology(v, input_checks);
-  verification::check_distances_to_input<Kernel>(v, input, output, box);
+  if(checks.count(Mesh_defect::NON_MANIFOLD_VERTEX) > 0 || checks.count(Mesh_defect::DEGENERATE_FACE) > 0)
+  {
+    Input_preparation_report repairs;
+    const internal::remeshing::Prepared_input prepared = internal::remeshing::prepare_input(input, np, true, repairs);
+    verification::verify_against_reference<Concurrency_tag, Epick>(v, prepared.mesh, output, np);
+  }
+  else
+    verification::verify_against_reference<Concurrency_tag, Kernel>(v, input, output, np);
   verification::check_vertex_locations<Kernel>(v, input, output, np);
   return v;
 }

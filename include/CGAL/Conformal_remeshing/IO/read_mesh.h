@@ -64,10 +64,15 @@ struct Input_repairs
   /// by CGAL's `stitch_borders()` (a surface written as pieces whose seams repeat the vertices);
   /// duplicated vertices that are not on such edges stay, and are reported.
   bool stitch_borders = false;
+  /// Non-manifold edges and vertices cut apart: every face of an edge of more than two faces is
+  /// separated from the others along it, and each fan of faces around a vertex gets its own copy
+  /// of the vertex (the surface stays where it is; its sheets then touch at coincident, distinct
+  /// vertices, the edge being a border of each).
+  bool split_non_manifold = false;
 
   /// every repair
-  static Input_repairs all() { return Input_repairs{true, true, true, true}; }
-  bool any() const { return triangulate_polygons || orient_faces || remove_isolated_vertices || stitch_borders; }
+  static Input_repairs all() { return Input_repairs{true, true, true, true, true}; }
+  bool any() const { return triangulate_polygons || orient_faces || remove_isolated_vertices || stitch_borders || split_non_manifold; }
 };
 
 /// \ingroup PkgConformalRemeshingIO
@@ -80,13 +85,15 @@ struct Input_repair_report
   std::size_t reoriented_faces = 0;
   std::size_t removed_isolated_vertices = 0;
   std::size_t stitched_vertices = 0; ///< vertices merged into others by the stitching of borders
+  std::size_t split_vertices = 0;    ///< vertices added to cut non-manifold edges and vertices apart
   /// for each face of the mesh read, the index of the file's face it is part of (the identity
   /// when no polygon was triangulated), e.g. to carry per-face data of the file over
   std::vector<std::size_t> file_face;
 
   bool any() const
   {
-    return triangulated_polygons > 0 || reoriented_faces > 0 || removed_isolated_vertices > 0 || stitched_vertices > 0;
+    return triangulated_polygons > 0 || reoriented_faces > 0 || removed_isolated_vertices > 0 || stitched_vertices > 0
+           || split_vertices > 0;
   }
 
   /// One line, e.g. "23 polygons triangulated into 46 triangles; 9 faces reoriented" ("nothing
@@ -114,7 +121,13 @@ struct Input_repair_report
       separator = "; ";
     }
     if(stitched_vertices > 0)
+    {
       out << separator << stitched_vertices << plural(stitched_vertices, " vertex", " vertices") << " stitched along borders";
+      separator = "; ";
+    }
+    if(split_vertices > 0)
+      out << separator << split_vertices << plural(split_vertices, " vertex", " vertices")
+          << " added to cut non-manifold edges and vertices apart";
     return any() ? out.str() : std::string("nothing repaired");
   }
 };
@@ -712,6 +725,66 @@ inline bool has_distinct_corners(const std::vector<std::size_t>& polygon)
   return sorted.size() >= 3 && std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end();
 }
 
+// Every edge of more than two faces cut apart, and every vertex whose faces form several fans
+// split: around each point, the faces joined across edges of exactly two faces keep one vertex,
+// and each other group of them gets a new copy of the point. Returns the number of points added.
+template <typename Point>
+std::size_t split_non_manifold_elements(std::vector<Point>& points, std::vector<std::vector<std::size_t> >& polygons)
+{
+  std::map<std::pair<std::size_t, std::size_t>, std::size_t> faces_at_edge;
+  for(const std::vector<std::size_t>& polygon : polygons)
+    for(std::size_t i = 0; i < polygon.size(); ++i)
+      ++faces_at_edge[std::minmax(polygon[i], polygon[(i + 1) % polygon.size()])];
+  std::vector<std::vector<std::pair<std::size_t, std::size_t> > > corners_at(points.size()); // (face, corner)
+  for(std::size_t f = 0; f < polygons.size(); ++f)
+    for(std::size_t i = 0; i < polygons[f].size(); ++i)
+      corners_at[polygons[f][i]].emplace_back(f, i);
+  const std::size_t before = points.size();
+  const std::vector<std::vector<std::size_t> > original = polygons; // the neighbours, before any renaming
+  for(std::size_t v = 0; v < before; ++v)
+  {
+    const std::vector<std::pair<std::size_t, std::size_t> >& corners = corners_at[v];
+    // Groups of the corners at v: union-find over faces joined across a manifold edge at v.
+    std::vector<std::size_t> parent(corners.size());
+    std::iota(parent.begin(), parent.end(), std::size_t(0));
+    const auto root = [&](std::size_t c) {
+      while(parent[c] != c)
+        c = parent[c] = parent[parent[c]];
+      return c;
+    };
+    std::map<std::size_t, std::size_t> corner_across; // other end of an edge at v -> a corner using it
+    for(std::size_t c = 0; c < corners.size(); ++c)
+    {
+      const std::vector<std::size_t>& polygon = original[corners[c].first];
+      const std::size_t i = corners[c].second, n = polygon.size();
+      for(std::size_t w : {polygon[(i + 1) % n], polygon[(i + n - 1) % n]})
+      {
+        if(faces_at_edge[std::minmax(v, w)] != 2)
+          continue;
+        const auto inserted = corner_across.emplace(w, c);
+        if(!inserted.second)
+          parent[root(c)] = root(inserted.first->second);
+      }
+    }
+    std::map<std::size_t, std::size_t> index_of_group;
+    for(std::size_t c = 0; c < corners.size(); ++c)
+    {
+      const auto inserted = index_of_group.emplace(root(c), index_of_group.empty() ? v : points.size());
+      if(inserted.second && inserted.first->second != v)
+        points.push_back(points[v]);
+      polygons[corners[c].first][corners[c].second] = inserted.first->second;
+    }
+  }
+  return points.size() - before;
+}
+
+// Records the faces that CGAL's orient_polygon_soup() reverses.
+struct Reversal_visitor : Polygon_mesh_processing::Default_orientation_visitor
+{
+  std::vector<bool>* reversed;
+  void polygon_orientation_reversed(std::size_t p) { (*reversed)[p] = !(*reversed)[p]; }
+};
+
 // CGAL's orient_polygon_soup() keeps the orientation of the first face it meets in each
 // component; here each component then keeps the orientation of most of its faces (a closed
 // surface stays outward when most of the file's faces were). `flipped` counts the faces
@@ -727,10 +800,14 @@ void orient_faces(const std::vector<Point>& points, std::vector<std::vector<std:
     return;
   std::vector<Point> oriented_points(points);
   std::vector<std::vector<std::size_t> > oriented(polygons);
-  if(!Polygon_mesh_processing::orient_polygon_soup(oriented_points, oriented) || oriented_points.size() != points.size())
+  std::vector<bool> reversed(polygons.size(), false);
+  Reversal_visitor visitor;
+  visitor.reversed = &reversed;
+  if(!Polygon_mesh_processing::orient_polygon_soup(oriented_points, oriented, CGAL::parameters::visitor(visitor))
+     || oriented_points.size() != points.size())
     return;
   // The components: faces joined across their edges (union-find on the faces).
-  std::vector<std::size_t> parent(polygons.size());
+  std::vector<std::size_t> parent(oriented.size());
   std::iota(parent.begin(), parent.end(), std::size_t(0));
   auto root = [&](std::size_t f) {
     while(parent[f] != f)
@@ -738,23 +815,25 @@ void orient_faces(const std::vector<Point>& points, std::vector<std::vector<std:
     return f;
   };
   std::map<std::pair<std::size_t, std::size_t>, std::size_t> face_at_edge;
-  for(std::size_t f = 0; f < polygons.size(); ++f)
-    for(std::size_t i = 0; i < polygons[f].size(); ++i)
+  for(std::size_t f = 0; f < oriented.size(); ++f)
+    for(std::size_t i = 0; i < oriented[f].size(); ++i)
     {
-      const std::size_t a = polygons[f][i], b = polygons[f][(i + 1) % polygons[f].size()];
+      const std::size_t a = oriented[f][i], b = oriented[f][(i + 1) % oriented[f].size()];
       const auto inserted = face_at_edge.emplace(std::minmax(a, b), f);
       if(!inserted.second)
         parent[root(f)] = root(inserted.first->second);
     }
-  std::vector<std::ptrdiff_t> balance(polygons.size(), 0); // per root: faces flipped minus faces kept
-  for(std::size_t f = 0; f < polygons.size(); ++f)
-    balance[root(f)] += oriented[f] != polygons[f] ? 1 : -1;
-  for(std::size_t f = 0; f < polygons.size(); ++f)
+  std::vector<std::ptrdiff_t> balance(oriented.size(), 0); // per root: faces flipped minus faces kept
+  for(std::size_t f = 0; f < oriented.size(); ++f)
+    balance[root(f)] += reversed[f] ? 1 : -1;
+  for(std::size_t f = 0; f < oriented.size(); ++f)
   {
-    const bool reverse_component = balance[root(f)] > 0;
-    if(reverse_component)
+    if(balance[root(f)] > 0)
+    {
       std::reverse(oriented[f].begin(), oriented[f].end());
-    if(oriented[f] != polygons[f])
+      reversed[f] = !reversed[f];
+    }
+    if(reversed[f])
       ++flipped;
   }
   polygons = std::move(oriented);
@@ -877,9 +956,12 @@ void repair_polygon_soup(std::vector<Point>& points, std::vector<std::vector<std
         return;
   if(repairs.remove_isolated_vertices)
     report.removed_isolated_vertices = remove_isolated_points(points, polygons);
+  if(repairs.split_non_manifold && std::all_of(polygons.begin(), polygons.end(), has_distinct_corners)
+     && !Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons))
+    report.split_vertices = split_non_manifold_elements(points, polygons);
   if(repairs.orient_faces && has_repeated_directed_edge(polygons))
     orient_faces(points, polygons, report.reoriented_faces);
-  if(repairs.stitch_borders)
+  if(repairs.stitch_borders && report.split_vertices == 0) // the borders of the cut sheets stay apart
     stitch_borders(points, polygons, report.stitched_vertices);
   if(repairs.triangulate_polygons)
     triangulate_polygons(points, polygons, report);

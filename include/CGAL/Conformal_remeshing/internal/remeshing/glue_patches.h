@@ -20,6 +20,7 @@
 #include <CGAL/Conformal_remeshing/internal/remeshing/tuning.h>
 
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Conformal_remeshing/internal/crossing_faces.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/property_map.h>
@@ -233,8 +234,7 @@ template <typename TriangleMesh>
 std::vector<Epick::Point_3> centroids_of_intersecting_faces(const TriangleMesh& mesh)
 {
   typedef typename boost::graph_traits<TriangleMesh>::face_descriptor Face;
-  std::vector<std::pair<Face, Face> > intersecting;
-  Polygon_mesh_processing::self_intersections(mesh, std::back_inserter(intersecting));
+  const std::vector<std::pair<Face, Face> > intersecting = crossing_face_pairs<CGAL::Sequential_tag>(mesh);
   const auto vp = get(CGAL::vertex_point, mesh);
   auto centroid = [&](Face f) {
     double c[3] = {0., 0., 0.};
@@ -263,8 +263,8 @@ inline std::set<std::size_t> patches_of_intersecting_triangles(const Glued_soup&
   typedef CGAL::Surface_mesh<Epick::Point_3> Soup_mesh;
   Soup_mesh mesh;
   Polygon_mesh_processing::polygon_soup_to_polygon_mesh(soup.points, soup.triangles, mesh);
-  std::vector<std::pair<Soup_mesh::Face_index, Soup_mesh::Face_index> > intersecting;
-  Polygon_mesh_processing::self_intersections(mesh, std::back_inserter(intersecting));
+  const std::vector<std::pair<Soup_mesh::Face_index, Soup_mesh::Face_index> > intersecting =
+    crossing_face_pairs<CGAL::Sequential_tag>(mesh);
   std::set<std::size_t> patches;
   for(const auto& pair : intersecting)
     for(Soup_mesh::Face_index f : {pair.first, pair.second})
@@ -288,18 +288,18 @@ Glued_output<TriangleMesh> glue_patches(const Meshed_patches& meshed, const Poly
   Glued_output<TriangleMesh> output;
   soup_to_mesh(soup, output);
   // Each glued mesh is checked once.
-  output.intersects = Polygon_mesh_processing::does_self_intersect<ConcurrencyTag>(output.mesh) && !input_self_intersects();
+  output.intersects = has_crossing_faces<ConcurrencyTag>(output.mesh) && !input_self_intersects();
   if(output.intersects && statistics.moves_after_gluing > 0)
   {
     improvement.apply(false, statistics);
     soup_to_mesh(soup, output);
-    output.intersects = Polygon_mesh_processing::does_self_intersect<ConcurrencyTag>(output.mesh);
+    output.intersects = has_crossing_faces<ConcurrencyTag>(output.mesh);
   }
   if(output.intersects && statistics.flips_after_gluing > 0)
   {
     improvement.undo(statistics);
     soup_to_mesh(soup, output);
-    output.intersects = Polygon_mesh_processing::does_self_intersect<ConcurrencyTag>(output.mesh);
+    output.intersects = has_crossing_faces<ConcurrencyTag>(output.mesh);
   }
   if(output.intersects)
   {

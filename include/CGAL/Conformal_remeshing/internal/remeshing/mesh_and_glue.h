@@ -62,8 +62,14 @@ inline void add_meshing_statistics(const Meshed_patches& meshed, Remeshing_stati
   }
 }
 
-inline Error self_intersection_error(const std::vector<Epick::Point_3>& crossings)
+inline Error self_intersection_error(const std::vector<Epick::Point_3>& crossings, std::size_t coincident_vertices)
 {
+  const std::string touching =
+    coincident_vertices == 0
+      ? std::string()
+      : "; the input's sheets touch at " + std::to_string(coincident_vertices)
+          + " coincident vertices (or along cut non-manifold edges), and sheets remeshed apart that touch along a line or "
+            "in a plane can cross there";
   std::ostringstream where;
   if(!crossings.empty())
     where << " near (" << crossings.front().x() << ", " << crossings.front().y() << ", " << crossings.front().z() << ")";
@@ -73,7 +79,8 @@ inline Error self_intersection_error(const std::vector<Epick::Point_3>& crossing
                  + std::to_string(1 << max_self_intersection_refinements)
                  + " of the target there: two parts of the surface come closer there than the output's chords deviate from it "
                    "(nearly touching sheets; a smaller target edge length may help), or false sharp features cut a bent surface "
-                   "into many patches (features_angle(0) may help)");
+                   "into many patches (features_angle(0) may help)"
+                 + touching);
 }
 
 /// The patches of `surface` meshed and glued with `meshing`, meshed again finer where the output
@@ -113,7 +120,7 @@ Glued_output<TriangleMesh> mesh_and_glue(const Flattened_surface& surface, const
     if(!glued.intersects)
       return glued;
     if(refinement == max_self_intersection_refinements || glued.crossings.empty())
-      throw self_intersection_error(glued.crossings);
+      throw self_intersection_error(glued.crossings, report.input.coincident_vertices);
     const std::set<std::size_t> around = with_neighbours(glued.crossing_patches, meshed);
     crossing_patches.insert(around.begin(), around.end());
     const std::size_t known = crossings.size();

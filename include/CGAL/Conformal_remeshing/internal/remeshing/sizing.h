@@ -241,13 +241,7 @@ public:
           box += m.point(w).bbox();
         }
     }
-    Local_refinement reaching = refinement_.within(box, target_);
-    const bool at_target = std::all_of(corners.begin(), corners.end(), [&](const std::array<Patch_size_field::Corner, 3>& c) {
-      return c[0].size == target_ && c[1].size == target_ && c[2].size == target_;
-    });
-    if(!field_ && reaching.empty() && at_target)
-      return Patch_size_field(target_); // the same sizes, and equal to the patch's uniform field of other rounds
-    return Patch_size_field(target_, gradation_, field_, reaching, std::move(corners));
+    return Patch_size_field(target_, gradation_, field_, refinement_.within(box, target_), std::move(corners));
   }
 
   /// The size at the point at parameter `t` in [0, 1] of the edge from `a` to `b`.
