@@ -551,7 +551,8 @@ std::pair<double, std::array<double, 3> > largest_distance_of_samples(const Tria
 /// both ways (the largest distance from points sampled on one mesh to the other, as
 /// `CGAL::Polygon_mesh_processing::approximate_Hausdorff_distance()` measures it, relative to the
 /// reference's bounding-box diagonal), the ratio of their areas, and whether the mesh
-/// self-intersects (`CGAL::Polygon_mesh_processing::does_self_intersect()`, exact predicates).
+/// self-intersects (`CGAL::Polygon_mesh_processing::self_intersections()`, exact predicates;
+/// faces that only touch at distinct vertices of one point are a contact, not a crossing).
 ///
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{number_of_points_on_faces}

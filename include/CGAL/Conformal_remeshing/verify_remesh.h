@@ -20,7 +20,6 @@
 #include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Conformal_remeshing/internal/crossing_faces.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/prepare_input.h>
-#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -214,17 +213,15 @@ bool is_finite_point(const Point_3& p)
 }
 
 // The input must be able to serve as a reference: a non-empty manifold triangle mesh with finite
-// coordinates and no degenerate face. Returns its checks.
+// coordinates and no degenerate face; `input_checks` are its checks.
 template <typename InputMesh>
-Mesh_check_report check_reference_mesh(const InputMesh& input)
+void check_reference_mesh(const InputMesh& input, const Mesh_check_report& input_checks)
 {
-  Mesh_check_report input_checks = check_mesh(input);
   if(faces(input).empty() || !is_triangle_mesh(input) || input_checks.count(Mesh_defect::NON_FINITE_COORDINATES) > 0
      || input_checks.count(Mesh_defect::DEGENERATE_FACE) > 0 || !input_checks.topology_available)
     throw Error(Error_code::INVALID_INPUT,
                 "verify_remesh: the input must be a non-empty manifold triangle mesh with finite coordinates and no "
                 "degenerate face (" + input_checks.summary() + ")");
-  return input_checks;
 }
 
 // The distance queries construct points (projections onto the input's faces) in double
@@ -420,12 +417,13 @@ void check_vertex_locations(Remesh_verification& v, const InputMesh& input, cons
 namespace internal {
 namespace verification {
 
-// Every check of verify_remesh() but the locations, with `reference` as the input.
+// Every check of verify_remesh() but the locations, with `reference`, whose checks are
+// `reference_checks`, as the input.
 template <typename Concurrency_tag, typename Kernel, typename ReferenceMesh, typename OutputMesh, typename NamedParameters>
-void verify_against_reference(Remesh_verification& v, const ReferenceMesh& reference, const OutputMesh& output,
-                              const NamedParameters& np)
+void verify_against_reference(Remesh_verification& v, const ReferenceMesh& reference, const Mesh_check_report& reference_checks,
+                              const OutputMesh& output, const NamedParameters& np)
 {
-  const Mesh_check_report reference_checks = check_reference_mesh(reference);
+  check_reference_mesh(reference, reference_checks);
   check_reference_face_sizes<Kernel>(reference);
   const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(reference);
   set_distance_tolerance(v, box, np);
@@ -524,10 +522,10 @@ Remesh_verification verify_remesh(const InputMesh& input, const OutputMesh& outp
   {
     Input_preparation_report repairs;
     const internal::remeshing::Prepared_input prepared = internal::remeshing::prepare_input(input, np, true, repairs);
-    verification::verify_against_reference<Concurrency_tag, Epick>(v, prepared.mesh, output, np);
+    verification::verify_against_reference<Concurrency_tag, Epick>(v, prepared.mesh, check_mesh(prepared.mesh), output, np);
   }
   else
-    verification::verify_against_reference<Concurrency_tag, Kernel>(v, input, output, np);
+    verification::verify_against_reference<Concurrency_tag, Kernel>(v, input, checks, output, np);
   verification::check_vertex_locations<Kernel>(v, input, output, np);
   return v;
 }

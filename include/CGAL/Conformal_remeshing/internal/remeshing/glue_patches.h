@@ -21,7 +21,6 @@
 
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Conformal_remeshing/internal/crossing_faces.h>
-#include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/property_map.h>
 
