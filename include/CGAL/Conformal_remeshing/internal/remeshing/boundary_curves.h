@@ -156,6 +156,24 @@ outgoing_curve_halfedges(const Poly_annulus_segmentation& s)
   return outgoing;
 }
 
+// The vertices of `m` (1 at a vertex, else 0) at the same point as another vertex: where sheets
+// of the surface touch (two holes meeting at a corner, sheets cut apart along a non-manifold
+// edge).
+inline std::vector<char> contact_vertices(const Poly_annulus_segmentation::Mesh& m)
+{
+  typedef Curve_samples::Vertex Vertex;
+  std::vector<std::pair<Epick::Point_3, Vertex> > by_point;
+  by_point.reserve(m.number_of_vertices());
+  for(Vertex v : m.vertices())
+    by_point.emplace_back(m.point(v), v);
+  std::sort(by_point.begin(), by_point.end());
+  std::vector<char> contact(m.number_of_vertices(), 0);
+  for(std::size_t i = 0; i + 1 < by_point.size(); ++i)
+    if(by_point[i].first == by_point[i + 1].first)
+      contact[by_point[i].second] = contact[by_point[i + 1].second] = 1;
+  return contact;
+}
+
 // The curve ends of `s` (1 at a vertex, else 0): the vertices where other than two curve edges
 // meet (`outgoing`), where the pair of patches changes, or where the curve turns by more than
 // `corner_degrees`.
@@ -377,28 +395,37 @@ inline void add_vertex_sample(const Poly_annulus_segmentation::Mesh& m,
   samples.face.push_back(face_of_curve_halfedge(m, outgoing[v].front()));
 }
 
-// Samples the `c`-th curve, `curve`, into `samples`: its ends, and between them points evenly
-// spaced along its `pieces_of_curve` (`curve_pieces()`, `total` units in all), as many pieces as
-// the spacing `curve_spacing` gives (with the fewest each curve needs); the chords between
-// consecutive samples are recorded as the curve's. `curves_between` counts the curves between
+// How many pieces the `curve` is sampled in: as many as its `total` units at the spacing
+// `curve_spacing` give, with the fewest it needs. `curves_between` counts the curves between
 // each pair of ends (smaller first).
-inline void place_curve_samples(const Poly_annulus_segmentation& s,
-                                const std::vector<std::vector<Poly_annulus_segmentation::Mesh::Halfedge_index> >& outgoing,
-                                const std::vector<Curve_samples::Vertex>& curve, std::size_t c,
-                                const std::vector<Curve_piece>& pieces_of_curve, double total, double curve_spacing,
-                                const std::map<std::pair<Curve_samples::Vertex, Curve_samples::Vertex>, int>& curves_between,
-                                Curve_samples& samples)
+inline std::size_t number_of_curve_pieces(const Poly_annulus_segmentation& s, const std::vector<Curve_samples::Vertex>& curve,
+                                          double total, double curve_spacing,
+                                          const std::map<std::pair<Curve_samples::Vertex, Curve_samples::Vertex>, int>& curves_between)
 {
-  typedef Poly_annulus_segmentation::Mesh::Halfedge_index Halfedge;
   const Poly_annulus_segmentation::Mesh& m = s.mesh;
-  const Halfedge first_edge = m.halfedge(curve[0], curve[1]);
+  const auto first_edge = m.halfedge(curve[0], curve[1]);
   // A slit (a feature inside a patch, the same patch on both sides) is traversed once per side
   // by the same loop: with one piece, a slit whose ends are both free would be a loop of two
   // samples, a polygon of no area in the plane.
   const bool slit = patch_beside(s, first_edge) == patch_beside(s, m.opposite(first_edge));
   const std::size_t fewest = curve.front() == curve.back() ? 3
                              : (slit || curves_between.at(std::minmax(curve.front(), curve.back())) > 1) ? 2 : 1;
-  const std::size_t pieces = (std::max<std::size_t>)(fewest, std::size_t(std::round(total / curve_spacing)));
+  return (std::max<std::size_t>)(fewest, std::size_t(std::round(total / curve_spacing)));
+}
+
+// Samples the `c`-th curve, `curve`, into `samples`: its ends, and between them `pieces` - 1
+// points evenly spaced along its `pieces_of_curve` (`curve_pieces()`, `total` units in all);
+// the chords between consecutive samples are recorded as the curve's. A curve of one edge
+// between two contacts (`contact_edge`) is cut into equal parts from its lexicographically
+// smaller end, so that every sheet through the edge gets the same points to the last bit.
+inline void place_curve_samples(const Poly_annulus_segmentation& s,
+                                const std::vector<std::vector<Poly_annulus_segmentation::Mesh::Halfedge_index> >& outgoing,
+                                const std::vector<Curve_samples::Vertex>& curve, std::size_t c,
+                                const std::vector<Curve_piece>& pieces_of_curve, double total, std::size_t pieces,
+                                bool contact_edge, Curve_samples& samples)
+{
+  typedef Poly_annulus_segmentation::Mesh::Halfedge_index Halfedge;
+  const Poly_annulus_segmentation::Mesh& m = s.mesh;
   const double step = total / double(pieces);
   add_vertex_sample(m, outgoing, curve.front(), samples);
   add_vertex_sample(m, outgoing, curve.back(), samples);
@@ -409,8 +436,21 @@ inline void place_curve_samples(const Poly_annulus_segmentation& s,
   };
   std::size_t piece = 0;
   double before = 0.; // curve units before the piece
+  const bool smaller_first = contact_edge && m.point(curve.front()) < m.point(curve.back());
   for(std::size_t k = 1; k < pieces; ++k)
   {
+    if(contact_edge)
+    {
+      const Epick::Point_3 &a = m.point(smaller_first ? curve.front() : curve.back()),
+                           &b = m.point(smaller_first ? curve.back() : curve.front());
+      const double t = double(smaller_first ? k : pieces - k) / double(pieces); // from `a`
+      const bool a_is_smaller_vertex = (smaller_first ? curve.front() : curve.back()) < (smaller_first ? curve.back() : curve.front());
+      samples.on_edge[std::minmax(curve.front(), curve.back())].emplace_back(a_is_smaller_vertex ? t : 1. - t, samples.points.size());
+      chord_to(samples.points.size());
+      samples.points.push_back(Epick::Point_3(a.x() + t * (b.x() - a.x()), a.y() + t * (b.y() - a.y()), a.z() + t * (b.z() - a.z())));
+      samples.face.push_back(face_of_curve_halfedge(m, m.halfedge(curve.front(), curve.back())));
+      continue;
+    }
     const double at = step * double(k);
     while(before + pieces_of_curve[piece].units < at && piece + 1 < pieces_of_curve.size())
       before += pieces_of_curve[piece++].units;
@@ -447,6 +487,12 @@ inline Curve_samples sample_boundary_curves(const Poly_annulus_segmentation& s, 
   const std::vector<std::vector<Poly_annulus_segmentation::Mesh::Halfedge_index> > outgoing = outgoing_curve_halfedges(s);
   std::vector<char> junction = curve_junctions(s, outgoing, corner_degrees);
   smooth_short_cut_turns(s, outgoing, sizing.target(), junction);
+  // Every sheet through a contact keeps it as a sample, so that the remeshed sheets touch at the
+  // input's points and along its polylines, and do not cross there.
+  const std::vector<char> contact = contact_vertices(m);
+  for(Vertex v : m.vertices())
+    if(contact[v] && !outgoing[v].empty())
+      junction[v] = 1;
   const std::vector<std::vector<Vertex> > curves = trace_boundary_curves(m, outgoing, junction);
 
   std::map<std::pair<Vertex, Vertex>, int> curves_between;
@@ -463,19 +509,36 @@ inline Curve_samples sample_boundary_curves(const Poly_annulus_segmentation& s, 
     curves_at[curves[c].back()].push_back(c);
   }
 
-  Curve_samples samples;
-  samples.number_of_curves = curves.size();
-  samples.is_kept_curve = kept_curves(s, curves);
+  std::vector<std::vector<Curve_piece> > pieces_of_curve(curves.size());
+  std::vector<double> total(curves.size(), 0.);
+  std::vector<std::size_t> pieces(curves.size());
   for(std::size_t c = 0; c < curves.size(); ++c)
   {
     const std::vector<Vertex>& curve = curves[c];
     const double curve_spacing = c < halvings.size() ? std::ldexp(sizing.target(), -halvings[c]) : sizing.target();
     const double grade_front = tiny_curve_grading_start(c, curve.front(), curves_at, curve_length, sizing.target()),
                  grade_back = tiny_curve_grading_start(c, curve.back(), curves_at, curve_length, sizing.target());
-    double total = 0.;
-    const std::vector<Curve_piece> pieces_of_curve =
-      curve_pieces(m, curve, sizing, curve_spacing, curve_length[c], grade_front, grade_back, total);
-    place_curve_samples(s, outgoing, curve, c, pieces_of_curve, total, curve_spacing, curves_between, samples);
+    pieces_of_curve[c] = curve_pieces(m, curve, sizing, curve_spacing, curve_length[c], grade_front, grade_back, total[c]);
+    pieces[c] = number_of_curve_pieces(s, curve, total[c], curve_spacing, curves_between);
+  }
+  // The sheets through a contact edge cut it into the same number of pieces, the most any asks.
+  std::vector<char> is_contact_edge(curves.size(), 0);
+  std::map<std::pair<Epick::Point_3, Epick::Point_3>, std::size_t> contact_edge_pieces;
+  for(std::size_t c = 0; c < curves.size(); ++c)
+    if(curves[c].size() == 2 && contact[curves[c].front()] && contact[curves[c].back()])
+    {
+      is_contact_edge[c] = 1;
+      std::size_t& most = contact_edge_pieces[std::minmax(m.point(curves[c].front()), m.point(curves[c].back()))];
+      most = (std::max)(most, pieces[c]);
+    }
+  Curve_samples samples;
+  samples.number_of_curves = curves.size();
+  samples.is_kept_curve = kept_curves(s, curves);
+  for(std::size_t c = 0; c < curves.size(); ++c)
+  {
+    if(is_contact_edge[c])
+      pieces[c] = contact_edge_pieces.at(std::minmax(m.point(curves[c].front()), m.point(curves[c].back())));
+    place_curve_samples(s, outgoing, curves[c], c, pieces_of_curve[c], total[c], pieces[c], is_contact_edge[c] != 0, samples);
   }
   for(auto& edge : samples.on_edge)
     std::sort(edge.second.begin(), edge.second.end());

@@ -62,8 +62,10 @@ constexpr int seed_layers = 2;
 constexpr double kept_tip_tolerance = 0.03;
 
 // Where a glued output intersects itself, those places are meshed again with edges of half the
-// target there, then a quarter, up to this many rounds.
-constexpr int max_self_intersection_refinements = 3;
+// target there, then a quarter, up to this many rounds: the last reaches 1/16 of the target, the
+// smallest size the size field gives (`bounded_size()`). (Tiny chamfered corners of CAD parts,
+// a tenth of the target across, need that last round: CGAL's cheese.off.)
+constexpr int max_self_intersection_refinements = 4;
 
 // A boundary curve of a patch whose chords do not glue is sampled twice as densely at most this
 // many times; diagonals shared by two patches are split in at most this many rounds.
