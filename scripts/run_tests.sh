@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs what the tests need, builds everything and runs the whole test suite through CTest.
+# Installs what the tests need, builds everything (the Python module too) and runs the whole test
+# suite through CTest, the module's pytest suite included (python/tests).
 # Exits non-zero when any test fails. Tests are built with -O1 but without NDEBUG, so CGAL's
 # own assertions stay active. -O1 rather than -O2: the build is most of CI's time, and on the
 # 2-core machine test_remeshing.cpp compiled in 173 s instead of 249 s while its tests ran in

@@ -142,6 +142,11 @@ namespace Conformal_remeshing {
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{no limit}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{stop_requested}
+///     \cgalParamDescription{polled wherever the `maximum_running_time` is checked (the patches' flows included); once it returns `true`, the call stops as past its time limit, with `Error_code::TIME_LIMIT_EXCEEDED` and a message saying that a stop was requested, `output` untouched: how a program ends a long call from outside (the Python module on Ctrl-C). It must be cheap, safe to call from several threads at once, and keep returning `true` once it has}
+///     \cgalParamType{a callable `bool()`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_locations}
 ///     \cgalParamDescription{an output: receives the input face (by the face index map) and barycentric coordinates (corner order of `CGAL::Polygon_mesh_processing::locate()`) of every output vertex, in the order of `vertices(output)`; pass it as `std::ref(locations)`. `verify_remesh()` checks them}
 ///     \cgalParamType{`std::reference_wrapper<std::vector<Surface_location> >`}

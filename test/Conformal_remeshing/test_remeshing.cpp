@@ -4,6 +4,8 @@
 
 #include "stage_tests.h"
 
+#include <atomic>
+
 
 TEST(RemeshConformal, WavyConcaveStrip)
 {
@@ -444,4 +446,49 @@ TEST(RemeshConformal, TimeLimit)
   EXPECT_EQ(limited.number_of_faces(), unlimited.number_of_faces());
   test_support::expect_error([&] { CR::remesh_conformal(mesh, output, CR::parameters::maximum_running_time(-1.)); },
                              CR::Error_code::INVALID_INPUT);
+}
+
+// stop_requested is polled at the time limit's checks: a program (the Python module, on Ctrl-C)
+// stops a call from outside, with TIME_LIMIT_EXCEEDED and the output untouched; the request
+// reaches the flows of the patches under way.
+TEST(RemeshConformal, StopRequested)
+{
+  Mesh mesh;
+  bm::make_spherical_cap(mesh, 90., 8, 24);
+  Mesh output;
+  CGAL::make_triangle(K::Point_3(0, 0, 0), K::Point_3(1, 0, 0), K::Point_3(0, 1, 0), output);
+  const auto expect_stop = [](const auto& run, const std::string& message) {
+    test_support::expect_error(run, CR::Error_code::TIME_LIMIT_EXCEEDED, {message, "a stop was requested (stop_requested)"});
+  };
+  const std::function<bool()> always = [] { return true; };
+  expect_stop([&] { CR::remesh_conformal(mesh, output, CR::parameters::stop_requested(always)); }, "remesh_conformal: stopped");
+  expect_stop([&] { CR::conformal_flatten(mesh, CR::parameters::stop_requested(always)); },
+              "conformal_flatten: stopped after the input checks");
+  // It reaches the flow under way, which stops between its Newton iterations: conformal_flatten()
+  // polls it after the input checks, after the welding and for the flow's remaining time, the
+  // flow from then on.
+  std::atomic<int> polls(0);
+  const std::function<bool()> from_the_fourth_poll = [&] { return ++polls > 3; };
+  expect_stop([&] { CR::conformal_flatten(mesh, CR::parameters::stop_requested(from_the_fourth_poll)); },
+              "conformal_flatten: stopped during the Ricci flow");
+
+  // Requested once the flattening has started: the patches' flows stop, the call stops there.
+  std::atomic<bool> stop(false);
+  const std::function<bool()> flag = [&] { return stop.load(); };
+  const auto request_at_flattening = [&](const std::string& s) {
+    if(s.compare(0, 10, "flattening") == 0)
+      stop = true;
+  };
+  expect_stop([&] {
+    CR::remesh_conformal(mesh, output, CR::parameters::stop_requested(flag, CR::parameters::progress(request_at_flattening)));
+  }, "remesh_conformal: stopped while flattening the patches");
+  EXPECT_EQ(output.number_of_faces(), 1u); // untouched
+
+  // A request that never comes changes nothing.
+  stop = false;
+  const std::function<bool()> never = [] { return false; };
+  Mesh polled, plain;
+  CR::remesh_conformal(mesh, polled, CR::parameters::stop_requested(never, CR::parameters::relative_target_edge_length(0.05)));
+  CR::remesh_conformal(mesh, plain, CR::parameters::relative_target_edge_length(0.05));
+  EXPECT_EQ(polled.number_of_faces(), plain.number_of_faces());
 }

@@ -631,10 +631,10 @@ void run_flow(Intrinsic_triangulation<double>& tri, Flattening_state& state, con
         tri, disc_flattening_targets(tri),
         parameters::maximum_running_time(
           time_limit.remaining(),
-          parameters::curvature_tolerance(
+          parameters::stop_requested(time_limit.stop_request(), parameters::curvature_tolerance(
             choose_parameter(get_parameter(np, internal_np::curvature_tolerance), 1e-10),
             CGAL::parameters::number_of_iterations(
-              choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 50)))));
+              choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 50))))));
     }
     catch(const Error& e)
     {

@@ -105,8 +105,9 @@ void flatten_poly_annuli(Poly_annulus_segmentation& segmentation, Flattened_poly
         result.flattenings[p] = conformal_flatten(
           result.patches[p].mesh,
           parameters::maximum_running_time(time_limit.remaining(),
-                                           parameters::maximum_edge_length(flow_edge_length(result.patches[p], longest_edge),
-                                                                           flattening_parameters)));
+                                           parameters::stop_requested(time_limit.stop_request(),
+                                                                      parameters::maximum_edge_length(flow_edge_length(result.patches[p], longest_edge),
+                                                                                                      flattening_parameters))));
         const Flattening_report& r = result.flattenings[p].report;
         if(r.status == Error_code::NOT_CONVERGED)
           failures[p] = std::string(error_message(r.status)) + " (" + r.flow_message + ")";

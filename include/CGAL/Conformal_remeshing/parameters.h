@@ -61,6 +61,11 @@
 // none). Read by every function that runs long; see `internal/time_limit.h`.
 CGAL_CONFORMAL_REMESHING_PARAMETER_BUILDER(maximum_running_time, CGAL::internal_np::maximum_running_time_t)
 
+// --- every function that reads `maximum_running_time` --------------------------------------------
+// `stop_requested(f)`: `f`, a callable `bool()`, is polled wherever `maximum_running_time` is
+// checked; once it returns true the call stops as at its time limit. See `internal/time_limit.h`.
+CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(stop_requested)
+
 // --- `remesh_conformal()` -----------------------------------------------------------------------
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(target_edge_length)          // double, input units
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(relative_target_edge_length) // double, of the diagonal
