@@ -472,6 +472,7 @@ py::dict to_dict(const CR::Remeshing_statistics& s)
   d["seconds_flattening"] = s.seconds_flattening;
   d["seconds_meshing_stage"] = s.seconds_meshing_stage;
   d["seconds_gluing"] = s.seconds_gluing;
+  d["seconds_proximity"] = s.seconds_proximity;
   d["seconds_ricci_flow"] = s.seconds_ricci_flow;
   d["seconds_planar_meshing"] = s.seconds_planar_meshing;
   d["seconds_optimization"] = s.seconds_optimization;
@@ -495,6 +496,9 @@ py::dict to_dict(const CR::Remeshing_report& r)
   d["features_fallback_reason"] = r.features_fallback_reason;
   d["frontal_dropped"] = r.frontal_dropped;
   d["frontal_fallback_reason"] = r.frontal_fallback_reason;
+  d["smallest_gap"] = r.smallest_gap;
+  d["smallest_gap_point"] = py::make_tuple(r.smallest_gap_point[0], r.smallest_gap_point[1], r.smallest_gap_point[2]);
+  d["gap_bounded_vertices"] = r.gap_bounded_vertices;
   d["self_intersection_refinements"] = r.self_intersection_refinements;
   d["refined_boundary_curves"] = r.refined_boundary_curves;
   d["split_diagonals"] = r.split_diagonals;

@@ -386,7 +386,8 @@ int main(int argc, char** argv)
           .field("input_crosses_itself", report.input_crosses_itself).end_object();
       json.key("seconds").begin_object().field("segmentation", statistics.seconds_segmentation)
           .field("flattening", statistics.seconds_flattening).field("meshing_and_pull_back", statistics.seconds_meshing_stage)
-          .field("gluing", statistics.seconds_gluing).field("ricci_flow_thread_seconds", statistics.seconds_ricci_flow)
+          .field("gluing", statistics.seconds_gluing).field("proximity", statistics.seconds_proximity)
+          .field("ricci_flow_thread_seconds", statistics.seconds_ricci_flow)
           .field("planar_meshing_thread_seconds", statistics.seconds_planar_meshing)
           .field("optimization_thread_seconds", statistics.seconds_optimization)
           .field("pull_back_thread_seconds", statistics.seconds_pull_back);
@@ -400,6 +401,14 @@ int main(int argc, char** argv)
           .field("feature_edges", report.feature_edges).field("dangling_feature_edges", report.dangling_feature_edges)
           .field("boundary_curves", statistics.boundary_curves).field("refined_boundary_curves", report.refined_boundary_curves)
           .field("split_diagonals", report.split_diagonals).end_object();
+      // Where sheets of the input come within a target length of each other (measured with a
+      // chord error; smallest_gap null: nowhere or not measured).
+      json.key("proximity").begin_object().field("measured", !std::isnan(report.smallest_gap))
+          .field("smallest_gap", report.smallest_gap);
+      json.key("smallest_gap_point").begin_array();
+      for(double c : report.smallest_gap_point)
+        json.value(std::isfinite(report.smallest_gap) ? c : std::numeric_limits<double>::quiet_NaN());
+      json.end_array().field("gap_bounded_vertices", report.gap_bounded_vertices).end_object();
       json.key("frontal_insertion").begin_object().field("dropped", report.frontal_dropped)
           .field("fallback_reason", report.frontal_fallback_reason).end_object();
       json.key("flattening").begin_object().field("max_iterations", statistics.max_newton_iterations)
@@ -446,5 +455,9 @@ int main(int argc, char** argv)
             << "); seconds: segmentation " << statistics.seconds_segmentation
             << ", flattening " << statistics.seconds_flattening << ", meshing and pull-back " << statistics.seconds_meshing_stage
             << ", gluing " << statistics.seconds_gluing << "\n";
+  if(std::isfinite(report.smallest_gap))
+    std::cout << "  sheets of the input " << report.smallest_gap << " apart at (" << report.smallest_gap_point[0] << ", "
+              << report.smallest_gap_point[1] << ", " << report.smallest_gap_point[2] << "); the gaps shortened the target at "
+              << report.gap_bounded_vertices << " input vertices\n";
   return 0;
 }

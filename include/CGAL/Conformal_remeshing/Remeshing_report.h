@@ -12,6 +12,7 @@
 
 #include <array>
 #include <cstddef>
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -93,7 +94,16 @@ struct Remeshing_report
   /// `frontal_fallback_reason` says why
   bool frontal_dropped = false;
   std::string frontal_fallback_reason;
-  /// rounds of meshing again with shorter edges where the output intersected itself (0 to 3)
+  /// with a chord error bound (named parameter `maximum_chord_error`), the smallest distance from
+  /// a vertex of the input to another sheet of it (a part of the surface more than twice as far
+  /// along the surface as across, or facing it: the other wall of a thin part, another
+  /// component); infinite when none comes within a target edge length, NaN when not measured
+  double smallest_gap = std::numeric_limits<double>::quiet_NaN();
+  std::array<double, 3> smallest_gap_point{{0., 0., 0.}}; ///< an input vertex with the smallest gap
+  /// input vertices where the gap shortened the target edge length, so that the chords of the
+  /// output, where the surface bends, stay within half the gap of it and cannot cross the gap
+  std::size_t gap_bounded_vertices = 0;
+  /// rounds of meshing again with shorter edges where the output intersected itself (0 to 4)
   std::size_t self_intersection_refinements = 0;
   std::size_t refined_boundary_curves = 0; ///< times a boundary curve of a thin patch was sampled twice as densely
   std::size_t split_diagonals = 0; ///< times a patch split an edge between two samples that another patch also has
@@ -145,6 +155,7 @@ struct Remeshing_statistics
   std::size_t moves_after_gluing = 0;
   /// wall-clock seconds of the stages (the flattening and meshing stages run patches in parallel)
   double seconds_segmentation = 0., seconds_flattening = 0., seconds_meshing_stage = 0., seconds_gluing = 0.;
+  double seconds_proximity = 0.; ///< wall-clock seconds of measuring the gaps between sheets
   /// seconds summed over the patches (thread time; the optimization's vertex moves within a
   /// patch run in parallel too, so `seconds_optimization` sums the patches' wall time)
   double seconds_ricci_flow = 0., seconds_planar_meshing = 0., seconds_optimization = 0., seconds_pull_back = 0.;

@@ -2,7 +2,9 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The meshing and gluing stages of `remesh_conformal()` and their escalation policy, in one place.
-// Defects that show only once the patches are glued are mended here, in this order:
+// With a chord error bound, the gaps between sheets (proximity.h) bound the size field before
+// anything is meshed, so that the chords of one sheet do not reach another. Defects that show
+// only once the patches are glued are mended here, in this order:
 //  1. the output intersects itself where the input does not (two parts of the surface closer
 //     than the output's chords deviate from it): those places are meshed again with edges of half
 //     the target there, graded to the target by half the distance, then a quarter, up to
@@ -23,6 +25,7 @@
 #include <CGAL/Conformal_remeshing/internal/time_limit.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/glue_patches.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/mesh_patches.h>
+#include <CGAL/Conformal_remeshing/internal/remeshing/proximity.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/remeshing_options.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/segment_and_flatten.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/sizing.h>
@@ -88,7 +91,8 @@ inline Error self_intersection_error(const std::vector<Epick::Point_3>& crossing
 /// \throws Error with `Error_code::NOT_AN_EMBEDDING` when it still does after the last round.
 template <typename ConcurrencyTag, typename TriangleMesh, typename Progress>
 Glued_output<TriangleMesh> mesh_and_glue(const Flattened_surface& surface, const Remeshing_options& options,
-                                         const Patch_meshing& meshing, const std::function<bool()>& input_self_intersects,
+                                         const Patch_meshing& meshing, const Surface_proximity& proximity,
+                                         const std::function<bool()>& input_self_intersects,
                                          const Time_limit& time_limit, const Progress& progress, Remeshing_report& report,
                                          Remeshing_statistics& statistics)
 {
@@ -106,7 +110,9 @@ Glued_output<TriangleMesh> mesh_and_glue(const Flattened_surface& surface, const
     Local_refinement near_crossings;
     near_crossings.points = crossings;
     near_crossings.size = h / double(1 << refinement);
-    const Sizing sizing(surface.segmentation, h, options.sizing_field, options.maximum_chord_error, near_crossings);
+    const Sizing sizing(surface.segmentation, h, options.sizing_field, options.maximum_chord_error, near_crossings, proximity.gap);
+    if(refinement == 0)
+      report.gap_bounded_vertices = sizing.gap_bounded_vertices();
     meshed = mesh_patches_on_shared_samples<ConcurrencyTag>(surface, sizing, options.corner_angle, meshing, time_limit, progress,
                                                             report, refinement == 0 ? nullptr : &meshed, crossing_patches);
     statistics.seconds_meshing_stage += seconds_since(start);
@@ -127,8 +133,10 @@ Glued_output<TriangleMesh> mesh_and_glue(const Flattened_surface& surface, const
     for(const Epick::Point_3& c : glued.crossings)
       add_if_far(crossings, c, 0.25 * h);
     report.self_intersection_refinements = std::size_t(refinement) + 1;
-    progress("the output intersects itself at " + std::to_string(glued.crossings.size() / 2) + " pairs of triangles ("
-             + std::to_string(crossings.size() - known) + " new places): meshing again with edges of 1/"
+    std::ostringstream near;
+    near << glued.crossings.front().x() << ", " << glued.crossings.front().y() << ", " << glued.crossings.front().z();
+    progress("the output intersects itself at " + std::to_string(glued.crossings.size() / 2) + " pairs of triangles, near ("
+             + near.str() + ") (" + std::to_string(crossings.size() - known) + " new places): meshing again with edges of 1/"
              + std::to_string(1 << (refinement + 1)) + " of the target there");
   }
 }
@@ -147,9 +155,21 @@ Glued_output<TriangleMesh> mesh_and_glue_with_fallback(const Flattened_surface& 
   meshing.frontal = options.frontal;
   meshing.optimization_rounds = options.optimization_rounds;
   meshing.moves_in_parallel = std::is_convertible<ConcurrencyTag, CGAL::Parallel_tag>::value;
+  // With a chord error bound, the gaps between sheets bound the chords too.
+  Surface_proximity proximity;
+  if(options.maximum_chord_error > 0.)
+  {
+    const auto start = std::chrono::steady_clock::now();
+    progress("measuring the gaps between sheets");
+    proximity = surface_proximity<ConcurrencyTag>(surface.segmentation.mesh, options.target_edge_length);
+    statistics.seconds_proximity += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    report.smallest_gap = proximity.smallest_gap;
+    report.smallest_gap_point = {{proximity.smallest_gap_point.x(), proximity.smallest_gap_point.y(), proximity.smallest_gap_point.z()}};
+    time_limit.check("remesh_conformal");
+  }
   try
   {
-    return mesh_and_glue<ConcurrencyTag, TriangleMesh>(surface, options, meshing, input_self_intersects, time_limit, progress, report, statistics);
+    return mesh_and_glue<ConcurrencyTag, TriangleMesh>(surface, options, meshing, proximity, input_self_intersects, time_limit, progress, report, statistics);
   }
   catch(const Error& e)
   {
@@ -161,7 +181,7 @@ Glued_output<TriangleMesh> mesh_and_glue_with_fallback(const Flattened_surface& 
              + "): meshing again with Delaunay refinement alone");
     meshing.frontal = Frontal_insertion();
     meshing.smoothing = options.refinement_smoothing;
-    return mesh_and_glue<ConcurrencyTag, TriangleMesh>(surface, options, meshing, input_self_intersects, time_limit, progress, report, statistics);
+    return mesh_and_glue<ConcurrencyTag, TriangleMesh>(surface, options, meshing, proximity, input_self_intersects, time_limit, progress, report, statistics);
   }
 }
 

@@ -281,6 +281,7 @@ inline std::vector<std::size_t> interior_points_in_space_order(const Planar_mesh
 // Flips and moves judged on the surface (see surface_optimization.h). The surface positions are
 // the optimizer's working state only: the pull-back finds the final points' input faces.
 inline Surface_optimization_report optimize_patch_on_surface(const Patch_job& job, const Planar_locator& locator,
+                                                             const Planar_size_field& planar_size,
                                                              Surface_map_with_hints& surface_map, Planar_mesh& planar)
 {
   const Conformal_flattening& flat = job.surface->flattening;
@@ -305,10 +306,16 @@ inline Surface_optimization_report optimize_patch_on_surface(const Patch_job& jo
   split_bounds.longest = split_edge_factor * h;
   split_bounds.across_bend = {shortest_off_surface_split_factor * h, off_surface_split_factor * h};
   split_bounds.tight_curve = {shortest_tight_curve_split_factor * h, tight_curve_split_factor * h};
+  // Short edges are collapsed below their share of the local size, into edges no longer than
+  // it allows (the collapse pass runs alone, so the size field's hint may be shared).
+  Size_field_hint collapse_hint = no_size_field_hint;
+  const std::function<double(const Epick::Point_2&)> local_ratio = [&](const Epick::Point_2& p) {
+    return planar_size.size_and_scale(p, collapse_hint).first / h;
+  };
   return optimize_on_surface(planar.points, positions, planar.triangles, planar.number_of_fixed_points, lift, meshing.minimum_angle,
                              longest_edge_factor * h, split_bounds, meshing.optimization_rounds, job.boundary.sample_ids,
-                             job.diagonals_to_split, meshing.moves_in_parallel, job.size.is_uniform() ? collapse_edge_factor * h : 0.,
-                             hints);
+                             job.diagonals_to_split, meshing.moves_in_parallel, collapse_edge_factor * h, hints,
+                             job.size.is_uniform() ? nullptr : local_ratio);
 }
 
 inline void record_optimization_phases(Remeshed_patch& result)
@@ -382,7 +389,7 @@ inline Remeshed_patch mesh_patch(const Patch_job& job)
 
   start = Clock::now();
   if(job.meshing.optimization_rounds > 0)
-    result.optimization = optimize_patch_on_surface(job, locator, surface_map, planar);
+    result.optimization = optimize_patch_on_surface(job, locator, planar_size, surface_map, planar);
   result.seconds_optimization = seconds_since(start);
   record_optimization_phases(result);
   // The optimizer keeps every chord (it never flips a boundary edge) and makes none of the

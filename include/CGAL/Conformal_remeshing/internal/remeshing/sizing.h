@@ -28,6 +28,11 @@ namespace Conformal_remeshing {
 namespace internal {
 namespace remeshing {
 
+/// Where another sheet of the surface is a gap away (proximity.h), the chords of the output may
+/// stand off the surface by at most this times the gap: the chords of both sheets may bend
+/// towards each other.
+constexpr double gap_chord_error = 0.5;
+
 /// A size bounded to [1/16, 1] times `target`; `target` where it is not finite.
 inline double bounded_size(double size, double target)
 {
@@ -184,20 +189,23 @@ public:
   Sizing(const Poly_annulus_segmentation& s, double target) : s_(s), target_(target) {}
 
   /// `field` may be empty; `chord_error` 0 means no curvature bound; `refinement` bounds the
-  /// sizes further near its places.
+  /// sizes further near its places; `gaps` (per vertex of the segmented mesh, see proximity.h;
+  /// empty: none) bound the chord error to `gap_chord_error` times the gap.
   Sizing(const Poly_annulus_segmentation& s, double target, const Field& field, double chord_error,
-         const Local_refinement& refinement = Local_refinement(), double gradation = 0.5)
+         const Local_refinement& refinement = Local_refinement(), const std::vector<double>& gaps = std::vector<double>(),
+         double gradation = 0.5)
     : s_(s), target_(target), field_(field), refinement_(refinement), gradation_(gradation)
   {
-    if(!has_field() && !(chord_error > 0.))
+    const bool has_gaps = std::any_of(gaps.begin(), gaps.end(), [](double gap) { return std::isfinite(gap); });
+    if(!has_field() && !(chord_error > 0.) && !has_gaps)
       return;
     const Mesh& m = s.mesh;
     vertex_size_.assign(m.number_of_vertices(), target);
     if(has_field())
       for(Vertex v : m.vertices())
         vertex_size_[v] = bounded(field_size(field_, refinement_, m.point(v)));
-    if(chord_error > 0.)
-      bound_by_curvature(chord_error);
+    if(chord_error > 0. || has_gaps)
+      bound_by_curvature(chord_error, has_gaps ? gaps : std::vector<double>());
     grade(gradation);
     if(!has_field() && std::all_of(vertex_size_.begin(), vertex_size_.end(), [&](double size) { return size == target_; }))
       vertex_size_.clear(); // uniform after all: the cheaper path, and the same result
@@ -205,6 +213,8 @@ public:
 
   double target() const { return target_; }
   bool is_uniform() const { return vertex_size_.empty(); }
+  /// The vertices of the segmented mesh whose size the gaps bound below the target.
+  std::size_t gap_bounded_vertices() const { return gap_bounded_vertices_; }
 
   /// The size at a vertex of the segmented mesh.
   double at(Vertex v) const { return is_uniform() ? target_ : vertex_size_[v]; }
@@ -264,22 +274,71 @@ private:
   double of_field(const Epick::Point_3& p) const { return has_field() ? bounded(field_size(field_, refinement_, p)) : target_; }
   double bounded(double size) const { return bounded_size(size, target_); }
 
-  void bound_by_curvature(double chord_error)
+  // Whether the normals of the faces on the two sides of `e` are kept apart: a sharp feature
+  // (also inside a patch, where the patch is slit open), a border, or a patch border.
+  bool separates_normals(typename Mesh::Edge_index e) const
   {
     const Mesh& m = s_.mesh;
-    std::map<std::pair<Vertex, std::size_t>, Epick::Vector_3> normal; // per vertex and patch
-    for(Face f : m.faces())
+    return m.is_border(e) || s_.is_feature[e] || s_.patch[m.face(m.halfedge(e))] != s_.patch[m.face(m.opposite(m.halfedge(e)))];
+  }
+
+  // The normal (area-weighted, not unit) of each fan of faces around a vertex between the edges
+  // that separate normals: per halfedge `h` of a face, the normal of the fan of `face(h)` at
+  // `target(h)`.
+  std::vector<Epick::Vector_3> fan_normals() const
+  {
+    const Mesh& m = s_.mesh;
+    std::vector<Epick::Vector_3> fan(m.number_of_halfedges(), CGAL::NULL_VECTOR);
+    std::vector<typename Mesh::Halfedge_index> around;
+    for(Vertex v : m.vertices())
     {
-      const auto h = m.halfedge(f);
-      const Epick::Vector_3 n = CGAL::cross_product(m.point(m.target(h)) - m.point(m.source(h)),
-                                                    m.point(m.target(m.next(h))) - m.point(m.source(h)));
-      for(Vertex v : m.vertices_around_face(h))
+      if(m.is_isolated(v))
+        continue;
+      around.clear();
+      for(auto h : CGAL::halfedges_around_target(m.halfedge(v), m))
+        around.push_back(h);
+      // Consecutive halfedges `around[i]` and `around[i + 1]` have their faces on either side
+      // of `next(around[i])`; a fan starts after a separating edge, or anywhere if there is none.
+      const std::size_t n = around.size();
+      std::size_t start = 0;
+      for(std::size_t i = 0; i < n; ++i)
+        if(m.is_border(around[i]) || separates_normals(m.edge(m.next(around[i]))))
+        {
+          start = (i + 1) % n;
+          break;
+        }
+      std::vector<std::size_t> members;
+      Epick::Vector_3 sum = CGAL::NULL_VECTOR;
+      for(std::size_t k = 0; k < n; ++k)
       {
-        auto inserted = normal.emplace(std::make_pair(v, s_.patch[f]), n);
-        if(!inserted.second)
-          inserted.first->second = inserted.first->second + n;
+        const auto h = around[(start + k) % n];
+        if(!m.is_border(h))
+        {
+          const Epick::Point_3 &a = m.point(m.source(h)), &b = m.point(v), &c = m.point(m.target(m.next(h)));
+          sum = sum + CGAL::cross_product(b - a, c - a);
+          members.push_back(std::size_t(h));
+        }
+        if(k + 1 == n || m.is_border(h) || separates_normals(m.edge(m.next(h))))
+        {
+          for(std::size_t g : members)
+            fan[g] = sum;
+          members.clear();
+          sum = CGAL::NULL_VECTOR;
+        }
       }
     }
+    return fan;
+  }
+
+  // The chord error at each edge is the smaller of `chord_error` (none if 0) and
+  // `gap_chord_error` times the gap at either end (`gaps`, none if empty). The surface's turn
+  // along an edge is that of the normals of its face's fans at its ends (`fan_normals()`), so
+  // that sharp features, also those inside a patch, do not count as curvature.
+  void bound_by_curvature(double chord_error, const std::vector<double>& gaps)
+  {
+    const Mesh& m = s_.mesh;
+    std::vector<Vertex> gap_bounded;
+    const std::vector<Epick::Vector_3> fan = fan_normals();
     auto unit = [](const Epick::Vector_3& n) {
       const double l = std::sqrt(n.squared_length());
       return l > 0. ? n / l : n;
@@ -289,16 +348,28 @@ private:
       {
         const Vertex a = m.source(h), b = m.target(h);
         const double length = std::sqrt(CGAL::squared_distance(m.point(a), m.point(b)));
-        const Epick::Vector_3 na = unit(normal.at({a, s_.patch[f]})), nb = unit(normal.at({b, s_.patch[f]}));
+        const Epick::Vector_3 na = unit(fan[std::size_t(m.prev(h))]), nb = unit(fan[std::size_t(h)]);
         if(!(length > 0.) || na == CGAL::NULL_VECTOR || nb == CGAL::NULL_VECTOR)
           continue;
         const double turn = 2. * std::asin((std::min)(1., 0.5 * std::sqrt((na - nb).squared_length())));
         if(!(turn > 0.))
           continue;
-        const double size = bounded(std::sqrt(8. * chord_error * length / turn));
+        const double by_gap = gaps.empty() ? std::numeric_limits<double>::infinity()
+                                           : gap_chord_error * (std::min)(gaps[std::size_t(a)], gaps[std::size_t(b)]);
+        const double error = (std::min)(chord_error > 0. ? chord_error : std::numeric_limits<double>::infinity(), by_gap);
+        if(!std::isfinite(error))
+          continue;
+        const double size = bounded(std::sqrt(8. * error * length / turn));
+        const bool bounded_by_gap = by_gap == error && size < target_;
         for(Vertex v : {a, b})
+        {
+          if(bounded_by_gap)
+            gap_bounded.push_back(v);
           vertex_size_[v] = (std::min)(vertex_size_[v], size);
+        }
       }
+    std::sort(gap_bounded.begin(), gap_bounded.end());
+    gap_bounded_vertices_ = std::size_t(std::unique(gap_bounded.begin(), gap_bounded.end()) - gap_bounded.begin());
   }
 
   // Smallest sizes first (Dijkstra): each vertex is bounded by its neighbours' size plus the
@@ -335,6 +406,7 @@ private:
   Local_refinement refinement_;
   double gradation_ = 0.5;
   std::vector<double> vertex_size_; // empty when uniform
+  std::size_t gap_bounded_vertices_ = 0;
 };
 
 /// Appends `p` to `points` unless one of them is within `spacing` of it.

@@ -25,6 +25,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdint>
+#include <functional>
 #include <limits>
 #include <vector>
 
@@ -458,8 +459,10 @@ public:
   /// farther off (see `keep_chords()`), and join no vertex to two images of one sample. The split
   /// passes leave the halves of the edges they split, 0.63 times the target long, and where the
   /// refinement's lattice of one planar spacing meets a coarser part, clusters of them. Returns
-  /// the number of collapses; `remove_collapsed_vertices()` drops the vertices that went.
-  std::size_t collapse_pass(double shortest)
+  /// the number of collapses; `remove_collapsed_vertices()` drops the vertices that went. With
+  /// `local_ratio` (the size field over the target length at a planar point, at most 1), both
+  /// bounds shrink by the ratio at the edge's planar midpoint.
+  std::size_t collapse_pass(double shortest, const std::function<double(const Point_2&)>& local_ratio = nullptr)
   {
     std::size_t collapses = 0;
     std::vector<int> ring_a, ring_b, merged, sorted;
@@ -472,9 +475,13 @@ public:
         if(u < t || collapsed_triangle[u]) // each inner edge once
           continue;
         int a = vertex(t, k + 1), b = vertex(t, k + 2);
-        if(!(CGAL::squared_distance(positions_[a], positions_[b]) < shortest * shortest) || (fixed_[a] && fixed_[b])
-           || !interior_ring(a, ring_a) || !interior_ring(b, ring_b))
+        const double squared_length = CGAL::squared_distance(positions_[a], positions_[b]);
+        if(!(squared_length < shortest * shortest) || (fixed_[a] && fixed_[b]) || !interior_ring(a, ring_a) || !interior_ring(b, ring_b))
           continue;
+        const double ratio = local_ratio ? local_ratio(CGAL::midpoint(points_[a], points_[b])) : 1.;
+        if(!(squared_length < ratio * ratio * shortest * shortest))
+          continue;
+        const double longest_squared = ratio * ratio * longest_squared_;
         if(fixed_[b])
         {
           std::swap(a, b);
@@ -512,7 +519,7 @@ public:
           const int q = merged[i], r = merged[(i + 1) % merged.size()];
           valid = CGAL::orientation(p, points_[q], points_[r]) == CGAL::POSITIVE
                   && Triangle_shape::min_angle_cosine(x, positions_[q], positions_[r]) <= limit
-                  && CGAL::squared_distance(x, positions_[q]) <= longest_squared_;
+                  && CGAL::squared_distance(x, positions_[q]) <= longest_squared;
         }
         for(std::size_t i = 0; i < merged.size() && valid; ++i)
         {
@@ -1227,7 +1234,9 @@ private:
 /// (from the first split on, no flip or move makes an edge longer than `split.longest`, when
 /// that is set, unless it replaces a longer one, nor a chord across a bend that
 /// `split.across_bend` names, unless it replaces a deeper one); then, when `shortest_edge` is
-/// positive, a collapse of the interior edges shorter than it on the surface and one more round
+/// positive, a collapse of the interior edges shorter than it on the surface (times
+/// `local_size_ratio` at their planar midpoints, when given: the size field over the target
+/// length, which also shrinks the length bound of the collapse) and one more round
 /// (the collapsed vertices are removed at the end, and the others numbered in their order; the
 /// first `number_of_fixed_points` keep their indices); then skewness passes, which
 /// also make no chord `split.tight_curve` names, and angle passes toward 30 degrees (see
@@ -1248,7 +1257,8 @@ Surface_optimization_report optimize_on_surface(std::vector<Epick::Point_2>& poi
                                                 const std::vector<std::size_t>& sample_ids = {},
                                                 const std::set<std::pair<std::size_t, std::size_t> >& forbidden_diagonals = {},
                                                 bool in_parallel = false, double shortest_edge = 0.,
-                                                const std::vector<std::size_t>& hints = {})
+                                                const std::vector<std::size_t>& hints = {},
+                                                const std::function<double(const Epick::Point_2&)>& local_size_ratio = nullptr)
 {
   Surface_optimization_report report;
   if(rounds <= 0 || triangles.empty())
@@ -1308,7 +1318,7 @@ Surface_optimization_report optimize_on_surface(std::vector<Epick::Point_2>& poi
   if(shortest_edge > 0.)
   {
     optimizer.keep_chords(split);
-    report.collapses = optimizer.collapse_pass(shortest_edge);
+    report.collapses = optimizer.collapse_pass(shortest_edge, local_size_ratio);
     optimizer.keep_chords(bends);
     flip_and_smooth();
   }

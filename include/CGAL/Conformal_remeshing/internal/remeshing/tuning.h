@@ -34,9 +34,9 @@ constexpr double off_surface_split_factor = 0.15, shortest_off_surface_split_fac
 // longest edges cut under it. From the first split on, no flip or move makes such a chord.
 constexpr double tight_curve_split_factor = 0.045, shortest_tight_curve_split_factor = 1.05;
 
-// After the splits, the optimization collapses the inner edges shorter than this (uniform
-// sizing only): split halves, and the edges where a lattice grown in the plane meets the
-// coarser mesh from the border.
+// After the splits, the optimization collapses the inner edges shorter than this times the
+// size there: split halves, and the edges where a lattice grown in the plane meets the coarser
+// mesh from the border.
 constexpr double collapse_edge_factor = 0.7;
 
 // The frontal insertion's target edge length in the plane, as a ratio to the refinement's size
