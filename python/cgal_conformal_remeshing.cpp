@@ -391,6 +391,7 @@ py::dict to_dict(const CR::Flattening_report& r)
   d["boundary_loops"] = r.boundary_loops;
   d["boundary_splits"] = r.boundary_splits;
   d["edge_splits"] = r.edge_splits;
+  d["refined_edge_length"] = r.refined_edge_length;
   d["retriangulated_faces"] = r.retriangulated_faces;
   d["welded_vertices"] = r.welded_vertices;
   d["flat_sides_shortened"] = r.flat_sides_shortened;

@@ -48,7 +48,8 @@ std::string json_report(const std::string& input, const CR::Conformal_flattening
   json.field("input", input).field("status", CR::error_message(r.status)).field("converged", r.converged);
   json.field("iterations", r.iterations).field("curvature_error", r.curvature_error).field("flips", r.flips);
   json.field("boundary_loops", r.boundary_loops).field("holes", f.holes.size()).field("boundary_splits", r.boundary_splits);
-  json.field("edge_splits", r.edge_splits).field("flat_sides_shortened", r.flat_sides_shortened);
+  json.field("edge_splits", r.edge_splits).field("refined_edge_length", r.refined_edge_length)
+      .field("flat_sides_shortened", r.flat_sides_shortened);
   json.field("welded_vertices", r.welded_vertices).field("min_scale", r.min_scale).field("max_scale", r.max_scale);
   json.key("embedding").begin_object().field("is_embedding", r.embedding.is_embedding())
       .field("summary", r.embedding.summary()).field("faces", r.embedding.number_of_faces)
@@ -157,6 +158,9 @@ int main(int argc, char** argv)
             << "  domain: outer boundary of " << f.outer_boundary.size() << " vertices and " << f.holes.size() << " holes\n"
             << "  local scale of the map: " << r.min_scale << " to " << r.max_scale << "\n"
             << "  embedding (exact predicates): " << r.embedding.summary() << "\n";
+  if(r.refined_edge_length > 0.)
+    std::cout << "  flattened again with the flow's edges split to " << r.refined_edge_length
+              << " (the flow on the input's edges folded a triangle)\n";
 
   try
   {

@@ -372,6 +372,20 @@ TEST(ConformalFlatten, CgalMeshesWithBoundaries)
   }
 }
 
+TEST(ConformalFlatten, ABladeWhoseSliversShearTheFlowIsFlattenedAgainFiner)
+{
+  // CGAL's blade.off: the flow on the input's own edges converges, yet its strips of long
+  // slivers shear the map until a triangle folds; the flattening is done again on a flow whose
+  // edges are split to a fiftieth of the diagonal.
+  Mesh mesh;
+  ASSERT_TRUE(CR::read_and_check_mesh(std::string(CONFORMAL_REMESHING_CGAL_DATA) + "/meshes/blade.off", mesh).is_valid());
+  const CR::Conformal_flattening once = CR::conformal_flatten(mesh, CR::parameters::maximum_edge_length(1e30));
+  EXPECT_FALSE(once.report.embedding.is_embedding()) << "the case this test is about is gone";
+  const CR::Conformal_flattening f = CR::conformal_flatten(mesh);
+  EXPECT_GT(f.report.refined_edge_length, 0.);
+  expect_embedding(f, 1);
+}
+
 TEST(ConformalFlatten, SliversFlatInDoubleLengthsAreOpened)
 {
   // A grid sheet, flat and curved (bent along y only, it would be developable and

@@ -71,6 +71,10 @@ struct Flattening_report
   std::size_t boundary_splits = 0;
   /// intrinsic edges split at their midpoints because they were longer than `maximum_edge_length`
   std::size_t edge_splits = 0;
+  /// when the flow on the input's own edges did not give an embedding (long slivers shear it),
+  /// the edge length to which the flow's edges were split for the flattening returned (a
+  /// fiftieth or a hundredth of the diagonal); 0 when not needed or `maximum_edge_length` is given
+  double refined_edge_length = 0.;
   /// faces of flat regions (developable or exactly coplanar) replaced by their constrained
   /// Delaunay triangulation in the plane before the flips (a CAD fan of slivers needs a number
   /// of flips quadratic in its size)
@@ -851,6 +855,86 @@ inline void set_flattening_status(Flattening_report& report)
     report.status = Error_code::NOT_AN_EMBEDDING;
 }
 
+template <typename TriangleMesh, typename NamedParameters>
+double bounding_box_diagonal(const TriangleMesh& mesh, const NamedParameters& np)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(vertex_point, mesh));
+  Bbox_3 box;
+  for(auto v : vertices(mesh))
+    box += get(vpm, v).bbox();
+  return std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) + CGAL::square(box.zmax() - box.zmin()));
+}
+
+/// The stages of `conformal_flatten()` after its input checks (`checks`), with the flow's
+/// edges split to at most `maximum_length` (0: not split).
+template <typename TriangleMesh, typename NamedParameters>
+Conformal_flattening flatten_patch(const TriangleMesh& mesh, const NamedParameters& np, const Mesh_check_report& checks,
+                                   double maximum_length, const Time_limit& time_limit)
+{
+  using CGAL::parameters::choose_parameter;
+  using CGAL::parameters::get_parameter;
+  typedef std::chrono::steady_clock Clock;
+  auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
+
+  // --- welding ---------------------------------------------------------------------------------
+  const Clock::time_point start = Clock::now();
+  auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(vertex_point, mesh));
+  auto vim = CGAL::get_initialized_vertex_index_map(mesh, np);
+  auto fim = CGAL::get_initialized_face_index_map(mesh, np);
+  const double inner_radius = checked_inner_radius(np);
+
+  Conformal_flattening result;
+  Flattening_report& report = result.report;
+  welding::Indexed_patch& patch = Patch_access::of(result);
+  patch = welding::make_indexed_patch(mesh, vpm, vim, fim);
+  report.boundary_loops = patch.boundary_loops.size();
+  check_edge_length_range(patch);
+
+  Flattening_state state;
+  state.welded = welded_loop(mesh, vim, patch, np);
+  // A planar patch (a CAD face) is flat already: its isometric layout is the flattening, with
+  // no welding, no flow and no split (the map is the identity inside every triangle). Not if it
+  // touches itself (a slit along a feature): the flow must open it.
+  state.planar = checks.count(Mesh_defect::DUPLICATED_VERTEX) == 0 && welding::is_planar(patch);
+  state.maximum_length = maximum_length;
+  if(!state.planar)
+    prepare_patch(patch, state, report);
+
+  weld_patch(result, state, inner_radius);
+  const Clock::time_point refinement_start = Clock::now();
+  refine_patch_region(result, state);
+  report.seconds_refinement = seconds_since(refinement_start);
+  report.seconds_welding = seconds_since(start);
+  time_limit.check("after the welding");
+
+  // --- the flow: flat everywhere, convex free boundary ----------------------------------------
+  const Clock::time_point flow_start = Clock::now();
+  run_flow(result.triangulation, state, time_limit, np);
+  report.seconds_flow = seconds_since(flow_start);
+  time_limit.check("after the Ricci flow");
+  report_flow(report, state);
+
+  // --- layout, and the patch region of the final triangulation --------------------------------
+  const Clock::time_point layout_start = Clock::now();
+  find_welded_regions(result, state);
+  lay_out(result, state, time_limit);
+  make_domain_boundary(result, state);
+  report.seconds_layout = seconds_since(layout_start);
+
+  // --- verification with exact predicates -------------------------------------------------------
+  const Clock::time_point check_start = Clock::now();
+  report.embedding = check_domain_embedding(result, state.loops);
+  report.seconds_check = seconds_since(check_start);
+
+  // --- the report ------------------------------------------------------------------------------
+  compute_conformal_factors(result, state);
+  count_folded_input_triangles(mesh, vim, result);
+  set_flattening_status(report);
+  return result;
+}
+
 } // namespace flattening
 
 } // namespace internal
@@ -873,6 +957,12 @@ inline void set_flattening_status(Flattening_report& report)
 /// coplanar is replaced by its constrained Delaunay triangulation in the plane, whose Delaunay
 /// flips do not grow with the square of the fans; points in such a region are still located in
 /// their input faces (`Flattening_report::retriangulated_faces`).
+///
+/// Long CAD slivers can shear the map of a flow run on the input's own edges until a triangle
+/// folds, the flow having converged (CGAL's `blade.off`). When that happens and
+/// `maximum_edge_length` is not given, the patch is flattened again with the flow's edges split
+/// to at most a fiftieth, then a hundredth of its bounding-box diagonal, and the first
+/// embedding is returned (`Flattening_report::refined_edge_length`).
 ///
 /// \tparam TriangleMesh a model of `FaceListGraph` and `HalfedgeListGraph`
 ///
@@ -930,68 +1020,28 @@ Conformal_flattening conformal_flatten(const TriangleMesh& mesh,
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
   namespace flattening = internal::flattening;
-  typedef std::chrono::steady_clock Clock;
-  auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
   const internal::Time_limit time_limit = internal::Time_limit::from(np, "conformal_flatten");
 
   // --- the input must be a patch: valid, connected, genus 0, with a boundary ----------------
   const Mesh_check_report checks = flattening::check_patch(mesh, np);
   time_limit.check("after the input checks");
 
-  // --- welding ---------------------------------------------------------------------------------
-  const Clock::time_point start = Clock::now();
-  auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(vertex_point, mesh));
-  auto vim = CGAL::get_initialized_vertex_index_map(mesh, np);
-  auto fim = CGAL::get_initialized_face_index_map(mesh, np);
-  const double inner_radius = flattening::checked_inner_radius(np);
-
-  Conformal_flattening result;
-  Flattening_report& report = result.report;
-  internal::welding::Indexed_patch& patch = internal::flattening::Patch_access::of(result);
-  patch = internal::welding::make_indexed_patch(mesh, vpm, vim, fim);
-  report.boundary_loops = patch.boundary_loops.size();
-  flattening::check_edge_length_range(patch);
-
-  flattening::Flattening_state state;
-  state.welded = flattening::welded_loop(mesh, vim, patch, np);
-  // A planar patch (a CAD face) is flat already: its isometric layout is the flattening, with
-  // no welding, no flow and no split (the map is the identity inside every triangle). Not if it
-  // touches itself (a slit along a feature): the flow must open it.
-  state.planar = checks.count(Mesh_defect::DUPLICATED_VERTEX) == 0 && internal::welding::is_planar(patch);
-  state.maximum_length = choose_parameter(get_parameter(np, internal_np::maximum_edge_length), 0.);
-  if(!state.planar)
-    flattening::prepare_patch(patch, state, report);
-
-  flattening::weld_patch(result, state, inner_radius);
-  const Clock::time_point refinement_start = Clock::now();
-  flattening::refine_patch_region(result, state);
-  report.seconds_refinement = seconds_since(refinement_start);
-  report.seconds_welding = seconds_since(start);
-  time_limit.check("after the welding");
-
-  // --- the flow: flat everywhere, convex free boundary ----------------------------------------
-  const Clock::time_point flow_start = Clock::now();
-  flattening::run_flow(result.triangulation, state, time_limit, np);
-  report.seconds_flow = seconds_since(flow_start);
-  time_limit.check("after the Ricci flow");
-  flattening::report_flow(report, state);
-
-  // --- layout, and the patch region of the final triangulation --------------------------------
-  const Clock::time_point layout_start = Clock::now();
-  flattening::find_welded_regions(result, state);
-  flattening::lay_out(result, state, time_limit);
-  flattening::make_domain_boundary(result, state);
-  report.seconds_layout = seconds_since(layout_start);
-
-  // --- verification with exact predicates -------------------------------------------------------
-  const Clock::time_point check_start = Clock::now();
-  report.embedding = flattening::check_domain_embedding(result, state.loops);
-  report.seconds_check = seconds_since(check_start);
-
-  // --- the report ------------------------------------------------------------------------------
-  flattening::compute_conformal_factors(result, state);
-  flattening::count_folded_input_triangles(mesh, vim, result);
-  flattening::set_flattening_status(report);
+  const double given_length = choose_parameter(get_parameter(np, internal_np::maximum_edge_length), 0.);
+  Conformal_flattening result = flattening::flatten_patch(mesh, np, checks, given_length, time_limit);
+  if(given_length > 0. || result.report.embedding.is_embedding())
+    return result;
+  // Long slivers can shear the map of a flow on the input's own edges until a triangle folds:
+  // flattened again with the flow's edges split at a fiftieth, then a hundredth of the diagonal.
+  const double diagonal = flattening::bounding_box_diagonal(mesh, np);
+  for(const double fraction : {0.02, 0.01})
+  {
+    Conformal_flattening refined = flattening::flatten_patch(mesh, np, checks, fraction * diagonal, time_limit);
+    if(refined.report.embedding.is_embedding())
+    {
+      refined.report.refined_edge_length = fraction * diagonal;
+      return refined;
+    }
+  }
   return result;
 }
 
