@@ -420,6 +420,9 @@ py::dict to_dict(const CR::Input_preparation_report& r)
   d["coincident_vertices"] = r.coincident_vertices;
   d["split_non_manifold_vertices"] = r.split_non_manifold_vertices;
   d["removed_degenerate_faces"] = r.removed_degenerate_faces;
+  d["coincident_example"] = r.coincident_example;
+  d["non_manifold_example"] = r.non_manifold_example;
+  d["degenerate_example"] = r.degenerate_example;
   return d;
 }
 

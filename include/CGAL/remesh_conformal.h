@@ -207,7 +207,8 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
   if(report.input.repaired())
     progress("repaired the input: " + report.input.summary());
   if(report.input.coincident_vertices > 0)
-    progress("keeping " + std::to_string(report.input.coincident_vertices) + " vertices at the same point as others as distinct vertices");
+    progress("keeping " + std::to_string(report.input.coincident_vertices) + " vertices at the same point as others as distinct vertices (e.g. "
+             + report.input.coincident_example + ")");
 
   constexpr bool with_locations =
     !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::vertex_locations_t>::value;

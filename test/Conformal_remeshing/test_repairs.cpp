@@ -125,6 +125,9 @@ TEST(InputPreparation, NonManifoldVerticesAreSplit)
   EXPECT_EQ(report.input.split_non_manifold_vertices, 1u);
   EXPECT_TRUE(report.input.repaired());
   EXPECT_NE(report.input.summary().find("non-manifold"), std::string::npos) << report.input.summary();
+  // The example names the vertex where the holes touch.
+  EXPECT_NE(report.input.non_manifold_example.find("separate fans"), std::string::npos) << report.input.non_manifold_example;
+  EXPECT_NE(report.input.summary().find(report.input.non_manifold_example), std::string::npos) << report.input.summary();
   expect_valid_output(input, output, locations);
   test_support::expect_error([&] { CR::remesh_conformal(input, output, CR::parameters::repair_input(false)); },
                              CR::Error_code::INVALID_INPUT, {"non-manifold vert", "repairs are off"});

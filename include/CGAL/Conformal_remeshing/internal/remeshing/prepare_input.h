@@ -60,6 +60,15 @@ inline std::vector<Defect_summary> defects_not_repaired(const Mesh_check_report&
   return left;
 }
 
+/// The example that `checks` gives of `defect`, empty if it has none.
+inline std::string example_of(const Mesh_check_report& checks, Mesh_defect defect)
+{
+  for(const Defect_summary& d : checks.defects)
+    if(d.defect == defect)
+      return d.example;
+  return std::string();
+}
+
 inline std::string defects_summary(const std::vector<Defect_summary>& defects)
 {
   Mesh_check_report report;
@@ -97,6 +106,7 @@ Prepared_input prepare_input(const TriangleMesh& input, const NamedParameters& n
   namespace PMP = CGAL::Polygon_mesh_processing;
   const Mesh_check_report checks = check_mesh(input, np);
   report.coincident_vertices = checks.count(Mesh_defect::DUPLICATED_VERTEX);
+  report.coincident_example = example_of(checks, Mesh_defect::DUPLICATED_VERTEX);
   const std::vector<Defect_summary> left = defects_not_repaired(checks);
   if(!left.empty())
     throw Error(Error_code::INVALID_INPUT, "invalid input mesh: " + defects_summary(left));
@@ -109,6 +119,8 @@ Prepared_input prepare_input(const TriangleMesh& input, const NamedParameters& n
   Prepared_input prepared = copy_of_input(input, np);
   Prepared_input::Mesh& mesh = prepared.mesh;
   report.split_non_manifold_vertices = PMP::duplicate_non_manifold_vertices(mesh);
+  report.non_manifold_example = example_of(checks, Mesh_defect::NON_MANIFOLD_VERTEX);
+  report.degenerate_example = example_of(checks, Mesh_defect::DEGENERATE_FACE);
   PMP::remove_degenerate_faces(mesh); // collapses and flips: the faces of zero area are gone, the count may stay
   mesh.collect_garbage();
   const Mesh_check_report after = check_mesh(mesh);
@@ -121,6 +133,7 @@ Prepared_input prepare_input(const TriangleMesh& input, const NamedParameters& n
                                              + report.summary() + ")");
   report.removed_degenerate_faces = checks.count(Mesh_defect::DEGENERATE_FACE); // none is left: checked above
   report.coincident_vertices = after.count(Mesh_defect::DUPLICATED_VERTEX);
+  report.coincident_example = example_of(after, Mesh_defect::DUPLICATED_VERTEX);
   return prepared;
 }
 

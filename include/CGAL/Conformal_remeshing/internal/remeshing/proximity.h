@@ -55,14 +55,85 @@ struct Surface_proximity
   Epick::Point_3 smallest_gap_point = CGAL::ORIGIN; ///< a vertex with the smallest gap
 };
 
-/// The gaps of the vertices of `m` within `radius` (see `Surface_proximity`). Per vertex: the
-/// ways along the edges out to `other_sheet_detour` times `radius` (Dijkstra), then the faces
-/// in the ball of `radius` (an AABB tree) that have no corner reached by a way shorter than the
-/// detour bound; the gap is the distance to the nearest of them.
-template <typename ConcurrencyTag>
-Surface_proximity surface_proximity(const Poly_annulus_segmentation::Mesh& m, double radius)
+typedef Poly_annulus_segmentation::Mesh Proximity_mesh;
+
+/// For each vertex of `m`, the other vertices at its point (sheets in contact).
+inline std::vector<std::vector<Proximity_mesh::Vertex_index> > coincident_vertices_of(const Proximity_mesh& m)
 {
-  typedef Poly_annulus_segmentation::Mesh Mesh;
+  typedef Proximity_mesh::Vertex_index Vertex;
+  std::vector<std::pair<Epick::Point_3, Vertex> > by_point;
+  for(Vertex w : m.vertices())
+    by_point.emplace_back(m.point(w), w);
+  std::sort(by_point.begin(), by_point.end());
+  std::vector<std::vector<Vertex> > twins(m.number_of_vertices());
+  for(std::size_t first = 0, last = 0; first < by_point.size(); first = last)
+  {
+    for(last = first + 1; last < by_point.size() && by_point[last].first == by_point[first].first; ++last) {}
+    for(std::size_t i = first; i < last && last - first > 1; ++i)
+      for(std::size_t j = first; j < last; ++j)
+        if(i != j)
+          twins[by_point[i].second].push_back(by_point[j].second);
+  }
+  return twins;
+}
+
+/// The lengths of the shortest ways along the edges of `m` from `v` to the vertices they reach
+/// within `reach` (Dijkstra), by vertex index; a way goes through a contact (`twins`, see
+/// `coincident_vertices_of()`) at no cost, so that sheets in contact are no gap to each other.
+inline std::unordered_map<std::size_t, double> ways_from(const Proximity_mesh& m, Proximity_mesh::Vertex_index v, double reach,
+                                                        const std::vector<std::vector<Proximity_mesh::Vertex_index> >& twins)
+{
+  typedef Proximity_mesh::Vertex_index Vertex;
+  typedef std::pair<double, Vertex> Entry;
+  std::unordered_map<std::size_t, std::pair<double, bool> > way; // the shortest found, and whether settled
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry> > queue;
+  way[std::size_t(v)] = {0., false};
+  queue.emplace(0., v);
+  const auto relax = [&](Vertex w, double length) {
+    if(length > reach)
+      return;
+    const auto inserted = way.emplace(std::size_t(w), std::make_pair(length, false));
+    if(!inserted.second)
+    {
+      if(inserted.first->second.second || !(length < inserted.first->second.first))
+        return;
+      inserted.first->second.first = length;
+    }
+    queue.emplace(length, w);
+  };
+  while(!queue.empty())
+  {
+    const Entry e = queue.top();
+    queue.pop();
+    std::pair<double, bool>& settled = way[std::size_t(e.second)];
+    if(settled.second)
+      continue;
+    settled.second = true;
+    for(Vertex w : twins[e.second])
+      relax(w, e.first);
+    for(Vertex w : m.vertices_around_target(m.halfedge(e.second)))
+      relax(w, e.first + std::sqrt(CGAL::squared_distance(m.point(e.second), m.point(w))));
+  }
+  std::unordered_map<std::size_t, double> lengths;
+  for(const auto& w : way)
+    lengths.emplace(w.first, w.second.first);
+  return lengths;
+}
+
+inline double cosine(const Epick::Vector_3& a, const Epick::Vector_3& b)
+{
+  const double l = std::sqrt(a.squared_length() * b.squared_length());
+  return l > 0. ? (a * b) / l : 0.;
+}
+
+/// The gaps of the vertices of `m` within `radius` (see `Surface_proximity`). Per vertex: the
+/// ways along the edges out to `other_sheet_detour` times `radius` (`ways_from()`), then the
+/// faces in the ball of `radius` (an AABB tree) that have no corner reached by a way shorter than
+/// the detour bound, or that face the vertex; the gap is the distance to the nearest of them.
+template <typename ConcurrencyTag>
+Surface_proximity surface_proximity(const Proximity_mesh& m, double radius)
+{
+  typedef Proximity_mesh Mesh;
   typedef Mesh::Vertex_index Vertex;
   typedef CGAL::AABB_face_graph_triangle_primitive<Mesh> Primitive;
   typedef CGAL::AABB_tree<CGAL::AABB_traits<Epick, Primitive> > Tree;
@@ -72,74 +143,25 @@ Surface_proximity surface_proximity(const Poly_annulus_segmentation::Mesh& m, do
     return proximity;
   Tree tree(faces(m).first, faces(m).second, m);
   tree.build();
-  const double reach = other_sheet_detour * radius;
   const auto face_normal = [&](Mesh::Face_index f) {
     const auto h = m.halfedge(f);
     return CGAL::normal(m.point(m.source(h)), m.point(m.target(h)), m.point(m.target(m.next(h))));
   };
-  // The vertices at the same point as another (sheets in contact), in groups: the ways go
-  // through a contact at no cost, so that the sheets there are no gap to each other.
-  std::vector<std::pair<Epick::Point_3, Vertex> > by_point;
-  for(Vertex w : m.vertices())
-    by_point.emplace_back(m.point(w), w);
-  std::sort(by_point.begin(), by_point.end());
-  std::vector<std::vector<Vertex> > twins_of(m.number_of_vertices());
-  for(std::size_t first = 0, last = 0; first < by_point.size(); first = last)
-  {
-    for(last = first + 1; last < by_point.size() && by_point[last].first == by_point[first].first; ++last) {}
-    for(std::size_t i = first; i < last && last - first > 1; ++i)
-      for(std::size_t j = first; j < last; ++j)
-        if(i != j)
-          twins_of[by_point[i].second].push_back(by_point[j].second);
-  }
+  const std::vector<std::vector<Vertex> > twins = coincident_vertices_of(m);
   std::vector<Epick::Vector_3> vertex_normal(m.number_of_vertices(), CGAL::NULL_VECTOR); // area-weighted
   for(Mesh::Face_index f : m.faces())
     for(Vertex w : m.vertices_around_face(m.halfedge(f)))
       vertex_normal[w] = vertex_normal[w] + face_normal(f);
-  const auto cosine = [](const Epick::Vector_3& a, const Epick::Vector_3& b) {
-    const double l = std::sqrt(a.squared_length() * b.squared_length());
-    return l > 0. ? (a * b) / l : 0.;
-  };
 
   for_each_index<ConcurrencyTag>(m.number_of_vertices(), [&](std::size_t i) {
     const Vertex v(static_cast<Mesh::size_type>(i));
     if(m.is_isolated(v))
       return;
     const Epick::Point_3& p = m.point(v);
-    // Ways along the edges from `v`, as far as `reach`: the shortest found, and whether settled.
-    std::unordered_map<std::size_t, std::pair<double, bool> > way;
-    typedef std::pair<double, Vertex> Entry;
-    std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry> > queue;
-    way[i] = {0., false};
-    queue.emplace(0., v);
-    while(!queue.empty())
-    {
-      const Entry e = queue.top();
-      queue.pop();
-      std::pair<double, bool>& settled = way[std::size_t(e.second)];
-      if(settled.second)
-        continue;
-      settled.second = true;
-      const auto relax = [&](Vertex w, double length) {
-        if(length > reach)
-          return;
-        const auto inserted = way.emplace(std::size_t(w), std::make_pair(length, false));
-        if(!inserted.second)
-        {
-          if(inserted.first->second.second || !(length < inserted.first->second.first))
-            return;
-          inserted.first->second.first = length;
-        }
-        queue.emplace(length, w);
-      };
-      for(Vertex w : twins_of[e.second])
-        relax(w, e.first);
-      for(Vertex w : m.vertices_around_target(m.halfedge(e.second)))
-        relax(w, e.first + std::sqrt(CGAL::squared_distance(m.point(e.second), m.point(w))));
-    }
+    const std::unordered_map<std::size_t, double> way = ways_from(m, v, other_sheet_detour * radius, twins);
     const auto on_own_sheet = [&](Vertex w) {
       const auto found = way.find(std::size_t(w));
-      return found != way.end() && found->second.first <= other_sheet_detour * std::sqrt(CGAL::squared_distance(p, m.point(w)));
+      return found != way.end() && found->second <= other_sheet_detour * std::sqrt(CGAL::squared_distance(p, m.point(w)));
     };
     std::vector<Mesh::Face_index> near;
     const Bbox_3 ball(p.x() - radius, p.y() - radius, p.z() - radius, p.x() + radius, p.y() + radius, p.z() + radius);
