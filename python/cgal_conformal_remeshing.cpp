@@ -741,7 +741,7 @@ py::tuple remesh(const py::object& V, const py::object& F, std::optional<double>
   require_callable(sizing, "sizing");
   require_callable(progress, "progress");
   // The arrays as the remesh_conformal tool takes a file: the soup repaired (unless `repair` is
-  // off), checked, then built into a mesh; the library repairs degenerate faces itself.
+  // off), checked, then built into a mesh; the library repairs the rest itself.
   Soup soup = soup_of(V, F, "V", "F", true);
   require_readable(CR::check_polygon_soup<K>(soup.points, soup.polygons), "remesh");
   CR::Input_repair_report repaired;
@@ -750,13 +750,7 @@ py::tuple remesh(const py::object& V, const py::object& F, std::optional<double>
   if(repair)
     CR::internal::repair_polygon_soup(soup.points, soup.polygons, CR::Input_repairs::all(), repaired);
   const CR::Mesh_check_report checks = CR::check_polygon_soup<K>(soup.points, soup.polygons);
-  CR::Mesh_check_report left = checks;
-  left.defects.erase(std::remove_if(left.defects.begin(), left.defects.end(),
-                                    [&](const CR::Defect_summary& d) {
-                                      return d.defect == CR::Mesh_defect::DUPLICATED_VERTEX
-                                             || (repair && d.defect == CR::Mesh_defect::DEGENERATE_FACE);
-                                    }),
-                     left.defects.end());
+  const CR::Mesh_check_report left = checks.refused_by_remeshing(repair);
   if(!left.is_valid() || !is_buildable(soup, checks))
     throw py::value_error("remesh: invalid input: " + (left.is_valid() ? checks.summary() : left.summary())
                           + (repaired.any() ? " (after the repairs: " + repaired.summary() + ")" : std::string()));

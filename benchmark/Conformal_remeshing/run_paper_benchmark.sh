@@ -62,7 +62,7 @@ bin="$build/benchmark/Conformal_remeshing"
 # --- the runs -----------------------------------------------------------------------------------
 mkdir -p "$out/runs" "$cache"
 # Cached models are named after the generators' sources too: a changed generator makes new ones.
-generator_key=$(cat "$root"/benchmark/Conformal_remeshing/generators/*.h | sha1sum | cut -c1-10)
+generator_key=$(cat "$root"/generators/Conformal_remeshing/*.h | sha1sum | cut -c1-10)
 plan_args=(--scale "$scale" --part "$part")
 [ -z "$models" ] || plan_args+=(--models "$models")
 [ -z "$methods" ] || plan_args+=(--methods "$methods")

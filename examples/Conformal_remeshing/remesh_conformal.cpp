@@ -248,14 +248,8 @@ int main(int argc, char** argv)
       = CR::read_and_check_mesh(o.input, input, o.repair ? CR::Input_repairs::all() : CR::Input_repairs(), repaired);
     if(repaired.any())
       progress("repaired the input: " + repaired.summary());
-    // What the library repairs itself (degenerate faces) or takes as it is (coincident vertices).
-    CR::Mesh_check_report left = checks;
-    left.defects.erase(std::remove_if(left.defects.begin(), left.defects.end(),
-                                      [&](const CR::Defect_summary& d) {
-                                        return d.defect == CR::Mesh_defect::DUPLICATED_VERTEX
-                                               || (o.repair && d.defect == CR::Mesh_defect::DEGENERATE_FACE);
-                                      }),
-                       left.defects.end());
+    // Refused here, before any work, as the library would refuse it.
+    const CR::Mesh_check_report left = checks.refused_by_remeshing(o.repair);
     if(!left.is_valid())
     {
       std::cerr << "remesh_conformal: invalid input '" << o.input << "': " << left.summary()

@@ -1,4 +1,4 @@
-// Tests of the CAD-like model generators (benchmark/Conformal_remeshing/generators), of the
+// Tests of the CAD-like model generators (generators/Conformal_remeshing), of the
 // paper-scale models at a small size, and of the shipped default model
 // examples/Conformal_remeshing/data/perforated_plate.off.
 

@@ -264,6 +264,20 @@ TEST(MeshChecks, DefectsInASurfaceMesh)
   EXPECT_EQ(CR::check_mesh(empty).count(CR::Mesh_defect::EMPTY_MESH), 1u);
 }
 
+
+TEST(MeshChecks, RemeshingRefusesWhatItCannotRepair)
+{
+  CR::Mesh_check_report r;
+  for(CR::Mesh_defect d : {CR::Mesh_defect::DUPLICATED_VERTEX, CR::Mesh_defect::NON_MANIFOLD_VERTEX,
+                           CR::Mesh_defect::DEGENERATE_FACE, CR::Mesh_defect::NON_MANIFOLD_EDGE})
+    r.defects.push_back(CR::Defect_summary{d, 2, "an example"});
+  const CR::Mesh_check_report repaired = r.refused_by_remeshing(true), as_it_is = r.refused_by_remeshing(false);
+  ASSERT_EQ(repaired.defects.size(), 1u) << repaired.summary();
+  EXPECT_EQ(repaired.count(CR::Mesh_defect::NON_MANIFOLD_EDGE), 2u);
+  EXPECT_EQ(as_it_is.defects.size(), 3u) << as_it_is.summary();
+  EXPECT_EQ(as_it_is.count(CR::Mesh_defect::DUPLICATED_VERTEX), 0u) << "coincident vertices are never refused";
+  EXPECT_EQ(as_it_is.count(CR::Mesh_defect::DEGENERATE_FACE), 2u);
+}
 // --- readers --------------------------------------------------------------------------------
 
 class Readers : public ::testing::TestWithParam<std::string> {};

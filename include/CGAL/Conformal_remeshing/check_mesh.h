@@ -69,6 +69,20 @@ struct Mesh_check_report
     return true;
   }
 
+  /// The defects for which `remesh_conformal()` refuses the mesh: all but coincident vertices,
+  /// which it takes as distinct points of the surface, and, with `repairs` (its `repair_input`
+  /// parameter, on by default), but non-manifold vertices and degenerate faces, which it repairs.
+  Mesh_check_report refused_by_remeshing(bool repairs) const
+  {
+    Mesh_check_report refused = *this;
+    refused.defects.clear();
+    for(const Defect_summary& s : defects)
+      if(s.defect != Mesh_defect::DUPLICATED_VERTEX
+         && !(repairs && (s.defect == Mesh_defect::NON_MANIFOLD_VERTEX || s.defect == Mesh_defect::DEGENERATE_FACE)))
+        refused.defects.push_back(s);
+    return refused;
+  }
+
   /// How many elements have defect `d` (0 if none).
   std::size_t count(Mesh_defect d) const
   {

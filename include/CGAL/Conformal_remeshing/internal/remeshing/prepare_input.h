@@ -48,16 +48,10 @@ struct Prepared_input
   Mesh::Property_map<Mesh::Face_index, std::size_t> input_face;
 };
 
-/// The defects that no repair here removes (everything but coincident vertices, non-manifold
-/// vertices and degenerate faces).
+/// The defects that no repair here removes (see `Mesh_check_report::refused_by_remeshing()`).
 inline std::vector<Defect_summary> defects_not_repaired(const Mesh_check_report& checks)
 {
-  std::vector<Defect_summary> left;
-  for(const Defect_summary& d : checks.defects)
-    if(d.defect != Mesh_defect::DUPLICATED_VERTEX && d.defect != Mesh_defect::NON_MANIFOLD_VERTEX
-       && d.defect != Mesh_defect::DEGENERATE_FACE)
-      left.push_back(d);
-  return left;
+  return checks.refused_by_remeshing(true).defects;
 }
 
 /// The example that `checks` gives of `defect`, empty if it has none.
