@@ -88,8 +88,11 @@ before_after() {
 
 echo "== the perforated plate (the default model): input, output, patches, planar meshing, sizing"
 plate=$root/examples/Conformal_remeshing/data/perforated_plate.off
-"$remesh" "$plate" "$work/plate_remeshed.off" --relative-edge-length 0.02 --quiet \
-  --plots "$work/plate_plots" --save-patches "$work/plate_patches" > "$work/plate.txt"
+rm -rf "$work/plate_patches"
+cp "$plate" "$work/perforated_plate.off"
+# In the work directory, so that the histograms' legends name the files without their folders.
+(cd "$work" && "$remesh" perforated_plate.off plate_remeshed.off --relative-edge-length 0.02 --quiet \
+  --plots plate_plots --save-patches plate_patches > plate.txt)
 before_after plate "$plate" "$work/plate_remeshed.off"
 svg_to_png "$work/plate_plots/quality.svg" "$fig/plate_quality.png" 800 400
 patches=("$work"/plate_patches/patch_*[0-9].off)
@@ -133,8 +136,8 @@ fi
 echo "== the suspension arm (the paper's Fig. 7 and 10): welded patch, checkerboard, input, output"
 "$generate" suspension_arm 10k "$work/arm.off" > /dev/null
 rm -rf "$work/arm_patches"
-"$remesh" "$work/arm.off" "$work/arm_remeshed.off" --relative-edge-length 0.02 --quiet \
-  --plots "$work/arm_plots" --save-patches "$work/arm_patches" > "$work/arm.txt"
+(cd "$work" && "$remesh" arm.off arm_remeshed.off --relative-edge-length 0.02 --quiet \
+  --plots arm_plots --save-patches arm_patches > arm.txt)
 arm_patch=$(largest_patch "$work/arm_patches")
 "$flatten" "$arm_patch" "$work/arm_patch" --picture-size 450 > "$work/arm_patch.txt"
 svg_to_png "$work/arm_patch_welded.svg" "$fig/arm_welded.png" 450 450
