@@ -6,6 +6,7 @@
 
 #include <cad_like_models.h>
 #include <model_tool.h>
+#include <test_surfaces.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -32,7 +33,9 @@ void print_help(std::ostream& out)
          "minimum angle below 10 and 1 degrees.\n\n"
          "Models:\n"
          "  perforated_plate   plate with rounded corners and circular through-holes (closed, genus = holes)\n"
-         "  sliver_fan_disc    flat disc fanned from one boundary vertex (open, one boundary)\n\n"
+         "  sliver_fan_disc    flat disc fanned from one boundary vertex (open, one boundary)\n"
+         "  wavy_c_strip       C-shaped wavy strip with a strongly concave boundary, where CGAL's LSCM\n"
+         "                     overlaps (open, one boundary; no options)\n\n"
          "Options of perforated_plate (defaults in brackets):\n"
       << "  --length X          size along x [" << d.length << "]\n"
       << "  --width Y           size along y [" << d.width << "]\n"
@@ -133,8 +136,10 @@ int main(int argc, char** argv)
       bm::make_perforated_plate(mesh, plate);
     else if(model == "sliver_fan_disc")
       bm::make_sliver_fan_disc(mesh, segments_given ? disc_segments : 64, disc_radius);
+    else if(model == "wavy_c_strip")
+      bm::make_wavy_c_strip(mesh);
     else
-      throw std::invalid_argument("unknown model '" + model + "' (known: perforated_plate, sliver_fan_disc)");
+      throw std::invalid_argument("unknown model '" + model + "' (known: perforated_plate, sliver_fan_disc, wavy_c_strip)");
 
     bm::write_off_atomically(mesh, output);
     bm::print_model_summary(std::cout, model, output, bm::cad_model_statistics(mesh));

@@ -5,6 +5,8 @@
 //   PREFIX.obj/.mtl + PREFIX_checker.png   the input mesh with uv and a checkerboard texture
 //   PREFIX_textured.png     a software rendering of that textured mesh
 //   PREFIX_report.json      what happened (iterations, curvature error, scale range, checks, CAD slivers opened)
+//   PREFIX_unwelded.svg     with --unwelded: CGAL's LSCM parameterization of the same patch, without
+//                           welding, its overlaps darker and its folded triangles red
 //
 // Exit codes: 0 success, 1 the input is not a valid patch or the flattening failed (not
 // converged, or not an embedding), 2 the tool could not run.
@@ -18,10 +20,14 @@
 #include <CGAL/Conformal_remeshing/conformal_flatten.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/border.h>
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/Surface_mesh_parameterization/LSCM_parameterizer_3.h>
+#include <CGAL/Surface_mesh_parameterization/parameterize.h>
 
 #include <Eigen/Eigenvalues>
 
+#include <cstdlib>
 #include <iostream>
 #include <string>
 
@@ -33,11 +39,14 @@ typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 namespace {
 
 const char* usage =
-  "usage: conformal_flatten IN OUT_PREFIX [--inner-radius DELTA]\n"
+  "usage: conformal_flatten IN OUT_PREFIX [--inner-radius DELTA] [--unwelded] [--picture-size PIXELS]\n"
   "  IN             a genus-0 triangle mesh with at least one boundary loop (.off .obj .ply .stl)\n"
   "  OUT_PREFIX     where to write PREFIX_welded.svg, PREFIX_checkerboard.svg, PREFIX.obj,\n"
   "                 PREFIX.mtl, PREFIX_checker.png, PREFIX_textured.png and PREFIX_report.json\n"
   "  --inner-radius the annulus' inner radius, in (0, 1) (default 0.3)\n"
+  "  --unwelded     also write PREFIX_unwelded.svg: CGAL's LSCM parameterization without welding,\n"
+  "                 its overlaps darker and its folded triangles red, and print its exact check\n"
+  "  --picture-size the width and height of PREFIX_textured.png in pixels (default 900)\n"
   "exit code: 0 success, 1 invalid patch or failed flattening, 2 the tool could not run\n";
 
 std::string json_report(const std::string& input, const CR::Conformal_flattening& f)
@@ -81,12 +90,47 @@ std::array<double, 3> view_direction(const Mesh& mesh)
   return {{d.x(), d.y(), d.z()}};
 }
 
+// The patch parameterized by CGAL's LSCM, without welding: writes its picture and prints what
+// the exact embedding check finds. Returns false if LSCM fails.
+bool write_unwelded_parameterization(const Mesh& input, const std::string& file)
+{
+  namespace SMP = CGAL::Surface_mesh_parameterization;
+  Mesh mesh = input;
+  auto uv = mesh.add_property_map<Mesh::Vertex_index, K::Point_2>("v:unwelded_uv").first;
+  const auto border = CGAL::Polygon_mesh_processing::longest_border(mesh).first;
+  if(SMP::parameterize(mesh, SMP::LSCM_parameterizer_3<Mesh>(), border, uv) != SMP::OK)
+    return false;
+  std::vector<K::Point_2> points(mesh.number_of_vertices());
+  for(auto v : mesh.vertices())
+    points[v.idx()] = uv[v];
+  std::vector<std::array<std::size_t, 3> > triangles;
+  for(auto f : mesh.faces())
+  {
+    const auto h = mesh.halfedge(f);
+    triangles.push_back({{mesh.source(h).idx(), mesh.target(h).idx(), mesh.target(mesh.next(h)).idx()}});
+  }
+  std::vector<std::vector<std::size_t> > loops;
+  std::vector<Mesh::Halfedge_index> borders;
+  CGAL::Polygon_mesh_processing::extract_boundary_cycles(mesh, std::back_inserter(borders));
+  for(auto h : borders)
+  {
+    loops.emplace_back();
+    for(auto b : CGAL::halfedges_around_face(h, mesh))
+      loops.back().push_back(mesh.target(b).idx());
+  }
+  std::cout << "  without welding (LSCM): " << CR::check_parameterization(mesh, uv, true).summary() << "\n";
+  tools::write_file_atomically(file, tools::unwelded_parameterization_svg(points, triangles, loops));
+  return true;
+}
+
 } // namespace
 
 int main(int argc, char** argv)
 {
   std::string input, prefix;
   double inner_radius = 0.3;
+  bool unwelded = false;
+  int picture_size = 900;
   for(int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
@@ -104,6 +148,17 @@ int main(int argc, char** argv)
       catch(const std::exception&)
       {
         std::cerr << "conformal_flatten: --inner-radius needs a number\n" << usage;
+        return 2;
+      }
+    }
+    else if(arg == "--unwelded")
+      unwelded = true;
+    else if(arg == "--picture-size" && i + 1 < argc)
+    {
+      picture_size = std::atoi(argv[++i]);
+      if(picture_size < 16 || picture_size > 8192)
+      {
+        std::cerr << "conformal_flatten: --picture-size needs a number of pixels in [16, 8192]\n" << usage;
         return 2;
       }
     }
@@ -198,9 +253,11 @@ int main(int argc, char** argv)
       const auto h = mesh.halfedge(face);
       triangles.push_back({{mesh.source(h).idx(), mesh.target(h).idx(), mesh.target(mesh.next(h)).idx()}});
     }
-    const tools::Rgb_image picture = tools::render_textured(points, triangles, texture, view_direction(mesh));
+    const tools::Rgb_image picture = tools::render_textured(points, triangles, texture, view_direction(mesh), picture_size);
     tools::write_file_atomically(prefix + "_textured.png", [&](std::ostream& out) { return tools::write_png(out, picture); });
     tools::write_file_atomically(prefix + "_report.json", json_report(input, f));
+    if(unwelded && !write_unwelded_parameterization(mesh, prefix + "_unwelded.svg"))
+      std::cerr << "conformal_flatten: CGAL's LSCM parameterization failed; no " << prefix << "_unwelded.svg\n";
   }
   catch(const std::exception& e)
   {

@@ -114,6 +114,35 @@ inline std::string checkerboard_svg(const CR::Conformal_flattening& f, int squar
   return svg.str();
 }
 
+// A parameterization without welding (uv of the input's vertices, its triangles and boundary
+// loops), as the paper's Fig. 2 (b) shows one: every triangle translucent, so that where the map
+// overlaps itself the layers add up to darker blue, folded (negatively oriented) triangles red,
+// and the boundary loops, which cross where the map overlaps, in black.
+inline std::string unwelded_parameterization_svg(const std::vector<CGAL::Epick::Point_2>& uv,
+                                                 const std::vector<std::array<std::size_t, 3> >& triangles,
+                                                 const std::vector<std::vector<std::size_t> >& loops)
+{
+  const double size = 900;
+  const Plane_view view(uv, size, 20);
+  std::ostringstream svg;
+  svg << "<?xml version='1.0' encoding='UTF-8'?>\n<svg xmlns='http://www.w3.org/2000/svg' width='" << size
+      << "' height='" << size << "' viewBox='0 0 " << size << " " << size << "'>\n<rect width='100%' height='100%' fill='white'/>\n";
+  for(const auto& t : triangles)
+  {
+    const auto &a = uv[t[0]], &b = uv[t[1]], &c = uv[t[2]];
+    const bool folded = CGAL::orientation(a, b, c) != CGAL::LEFT_TURN;
+    svg << "<path d='M" << view.x(a) << " " << view.y(a) << " L" << view.x(b) << " " << view.y(b) << " L" << view.x(c)
+        << " " << view.y(c) << " Z' fill='" << (folded ? "#e31a1c' fill-opacity='0.9'" : "#2171b5' fill-opacity='0.25'")
+        << "/>\n";
+  }
+  svg << "<path d='";
+  for(const auto& loop : loops)
+    for(std::size_t i = 0; i <= loop.size(); ++i)
+      svg << (i == 0 ? "M" : "L") << view.x(uv[loop[i % loop.size()]]) << " " << view.y(uv[loop[i % loop.size()]]) << " ";
+  svg << "' fill='none' stroke='black' stroke-width='1.2'/>\n</svg>\n";
+  return svg.str();
+}
+
 // A texture of `squares` x `squares` checks.
 inline Rgb_image checker_texture(int pixels = 512, int squares = 16)
 {

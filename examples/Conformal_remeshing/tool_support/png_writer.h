@@ -1,17 +1,24 @@
 // Copyright (c) 2026 CGAL Conformal Remeshing contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
-// A dependency-free PNG writer for the tools' pictures: RGB, 8 bits, the image data in stored
-// (uncompressed) deflate blocks, which every PNG reader accepts.
+// A PNG writer for the tools' pictures: RGB, 8 bits. The image data is compressed by zlib when
+// the tools are built with it (CONFORMAL_REMESHING_TOOLS_WITH_ZLIB, set by CMake when zlib is
+// found), and written in stored (uncompressed) deflate blocks otherwise, which every PNG reader
+// accepts too.
 
 #ifndef CGAL_CONFORMAL_REMESHING_TOOLS_PNG_WRITER_H
 #define CGAL_CONFORMAL_REMESHING_TOOLS_PNG_WRITER_H
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 #include <ostream>
 #include <string>
 #include <vector>
+
+#ifdef CONFORMAL_REMESHING_TOOLS_WITH_ZLIB
+#include <zlib.h>
+#endif
 
 namespace Conformal_remeshing_tools {
 
@@ -76,27 +83,18 @@ inline void write_chunk(std::ostream& out, const char* type, const std::vector<s
   out.write(reinterpret_cast<const char*>(chunk.data()), std::streamsize(chunk.size()));
 }
 
-} // namespace internal
-
-inline bool write_png(std::ostream& out, const Rgb_image& image)
+// The zlib stream of `raw`: compressed by zlib when available, else in stored blocks.
+inline std::vector<std::uint8_t> zlib_stream(const std::vector<std::uint8_t>& raw)
 {
-  static const std::uint8_t signature[8] = {137, 80, 78, 71, 13, 10, 26, 10};
-  out.write(reinterpret_cast<const char*>(signature), 8);
-
-  std::vector<std::uint8_t> header;
-  internal::put32(header, std::uint32_t(image.width));
-  internal::put32(header, std::uint32_t(image.height));
-  header.insert(header.end(), {8, 2, 0, 0, 0}); // 8 bits, RGB, deflate, no filter, no interlace
-  internal::write_chunk(out, "IHDR", header);
-
-  // Scanlines, each after a filter byte 0, in a zlib stream of stored blocks.
-  std::vector<std::uint8_t> raw;
-  const std::size_t row = std::size_t(image.width) * 3;
-  for(int y = 0; y < image.height; ++y)
+#ifdef CONFORMAL_REMESHING_TOOLS_WITH_ZLIB
+  uLongf size = compressBound(uLong(raw.size()));
+  std::vector<std::uint8_t> packed(size);
+  if(compress2(packed.data(), &size, raw.data(), uLong(raw.size()), 9) == Z_OK)
   {
-    raw.push_back(0);
-    raw.insert(raw.end(), image.pixels.begin() + std::ptrdiff_t(y * row), image.pixels.begin() + std::ptrdiff_t((y + 1) * row));
+    packed.resize(size);
+    return packed;
   }
+#endif
   std::vector<std::uint8_t> zlib = {0x78, 0x01};
   for(std::size_t offset = 0; offset < raw.size() || offset == 0;)
   {
@@ -118,8 +116,32 @@ inline bool write_png(std::ostream& out, const Rgb_image& image)
     a = (a + byte) % 65521;
     b = (b + a) % 65521;
   }
-  internal::put32(zlib, (b << 16) | a);
-  internal::write_chunk(out, "IDAT", zlib);
+  put32(zlib, (b << 16) | a);
+  return zlib;
+}
+
+} // namespace internal
+
+inline bool write_png(std::ostream& out, const Rgb_image& image)
+{
+  static const std::uint8_t signature[8] = {137, 80, 78, 71, 13, 10, 26, 10};
+  out.write(reinterpret_cast<const char*>(signature), 8);
+
+  std::vector<std::uint8_t> header;
+  internal::put32(header, std::uint32_t(image.width));
+  internal::put32(header, std::uint32_t(image.height));
+  header.insert(header.end(), {8, 2, 0, 0, 0}); // 8 bits, RGB, deflate, no filter, no interlace
+  internal::write_chunk(out, "IHDR", header);
+
+  // Scanlines, each after a filter byte 0, in one zlib stream.
+  std::vector<std::uint8_t> raw;
+  const std::size_t row = std::size_t(image.width) * 3;
+  for(int y = 0; y < image.height; ++y)
+  {
+    raw.push_back(0);
+    raw.insert(raw.end(), image.pixels.begin() + std::ptrdiff_t(y * row), image.pixels.begin() + std::ptrdiff_t((y + 1) * row));
+  }
+  internal::write_chunk(out, "IDAT", internal::zlib_stream(raw));
   internal::write_chunk(out, "IEND", {});
   return bool(out);
 }
