@@ -92,7 +92,8 @@ rm -rf "$work/plate_patches"
 cp "$plate" "$work/perforated_plate.off"
 # In the work directory, so that the histograms' legends name the files without their folders.
 (cd "$work" && "$remesh" perforated_plate.off plate_remeshed.off --relative-edge-length 0.02 --quiet \
-  --plots plate_plots --save-patches plate_patches > plate.txt)
+  --plots plate_plots --save-patches plate_patches --deviation-map plate_deviation > plate.txt)
+cp "$work/plate_deviation_input.png" "$fig/plate_deviation_input.png"
 before_after plate "$plate" "$work/plate_remeshed.off"
 svg_to_png "$work/plate_plots/quality.svg" "$fig/plate_quality.png" 800 400
 patches=("$work"/plate_patches/patch_*[0-9].off)
@@ -122,6 +123,12 @@ svg_to_png "$work/strip_welded.svg" "$fig/strip_welded.png" 450 450
 svg_to_png "$work/strip_checkerboard.svg" "$fig/strip_checkerboard.png" 450 450
 cp "$work/strip_textured.png" "$fig/strip_textured.png"
 
+fandisk=$cgal_data/meshes/fandisk.off
+if [ -f "$fandisk" ]; then
+  echo "== CGAL's fandisk.off: where the output strays from the input"
+  "$remesh" "$fandisk" "$work/fandisk_remeshed.off" --quiet --deviation-map "$work/fandisk_deviation" > "$work/fandisk.txt"
+  cp "$work/fandisk_deviation_input.png" "$fig/fandisk_deviation_input.png"
+fi
 shark=$cgal_data/meshes/mech-holes-shark.off
 if [ -f "$shark" ]; then
   echo "== CGAL's mech-holes-shark.off: a patch with 4 boundary loops, welded"

@@ -4,7 +4,7 @@
 //                    [--features-angle DEG] [--patches FILE] [--cut-plane a,b,c,d]...
 //                    [--save-patches DIR] [--sequential] [--report FILE.json] [--plots DIR] [--quiet]
 //                    [--time-limit SECONDS] [--optimization-rounds N] [--lloyd-iterations N] [--chord-error E]
-//                    [--no-frontal] [--no-repair]
+//                    [--no-frontal] [--no-repair] [--deviation-map PREFIX]
 //
 // The input's polygons are triangulated, its faces oriented consistently, its isolated vertices
 // removed and its borders along the same points stitched first (CR::Input_repairs), unless
@@ -15,6 +15,7 @@
 // limit was exceeded (nothing written).
 
 #include "atomic_file.h"
+#include "deviation_map.h"
 #include "flattening_pictures.h"
 #include "quality_plot_svg.h"
 #include "report_json.h"
@@ -51,7 +52,7 @@ const char* usage =
   "                        [--features-angle DEG] [--patches FILE] [--cut-plane a,b,c,d]...\n"
   "                        [--save-patches DIR] [--sequential] [--report FILE.json] [--plots DIR] [--quiet]\n"
   "                        [--time-limit SECONDS] [--optimization-rounds N] [--lloyd-iterations N] [--chord-error E]\n"
-  "                        [--no-frontal] [--no-repair]\n"
+  "                        [--no-frontal] [--no-repair] [--deviation-map PREFIX]\n"
   "  IN, OUT                 mesh files (.off .obj .ply .stl); OUT is written atomically\n"
   "  --target-edge-length L  target edge length in the input's units\n"
   "  --relative-edge-length R  target edge length as a fraction of the bounding-box diagonal (default 0.01)\n"
@@ -65,6 +66,9 @@ const char* usage =
   "  --sequential            one patch at a time (default: in parallel when built with TBB)\n"
   "  --report FILE.json      stage times, segmentation and flattening, quality of input and output, fidelity\n"
   "  --plots DIR             DIR/quality.svg: angle and skewness histograms, input and output (DIR is created)\n"
+  "  --deviation-map PREFIX  PREFIX_output.{ply,png} and PREFIX_input.{ply,png}: each face coloured by its largest\n"
+  "                          distance to the other surface (blue 0 to red at a quarter of the target length), and\n"
+  "                          the histograms of those distances in the output and in --report\n"
   "  --quiet                 no progress messages\n"
   "  --time-limit SECONDS    give up (exit code 3, no output written) if reading and remeshing take longer\n"
   "  --optimization-rounds N rounds of flips and smoothing judged on the surface after the refinement (default 5, 0: none)\n"
@@ -83,7 +87,7 @@ const char* usage =
 
 struct Options
 {
-  std::string input, output, report, plots, patches, save_patches;
+  std::string input, output, report, plots, patches, save_patches, deviation_map;
   double target = 0., relative = 0.01, min_angle = 28., features_angle = 60.;
   double time_limit = std::numeric_limits<double>::infinity();
   double chord_error = 0.;
@@ -164,6 +168,8 @@ bool parse(int argc, char** argv, Options& o)
       o.report = argv[++i];
     else if(arg == "--plots" && i + 1 < argc)
       o.plots = argv[++i];
+    else if(arg == "--deviation-map" && i + 1 < argc)
+      o.deviation_map = argv[++i];
     else if(arg == "--quiet")
       o.quiet = true;
     else if(arg == "--no-repair")
@@ -355,6 +361,12 @@ int main(int argc, char** argv)
   progress("measuring quality and fidelity");
   const CR::Mesh_quality_report before = CR::mesh_quality(input), after = CR::mesh_quality(output);
   const CR::Reference_comparison fidelity = CR::compare_to_reference(output, input);
+  CR::Face_deviations deviations;
+  if(!o.deviation_map.empty())
+  {
+    progress("measuring the distance of every face to the other surface");
+    deviations = CR::face_deviations(output, input);
+  }
 
   try
   {
@@ -424,9 +436,20 @@ int main(int argc, char** argv)
       tools::write_json(json, after);
       json.key("fidelity");
       tools::write_json(json, fidelity);
+      if(!o.deviation_map.empty())
+      {
+        // Largest distance per face, in target lengths, and its histogram.
+        json.key("deviation").begin_object().key("output_faces_to_input");
+        tools::write_deviation_json(json, deviations.of_mesh_faces, report.target_edge_length);
+        json.key("input_faces_to_output");
+        tools::write_deviation_json(json, deviations.of_reference_faces, report.target_edge_length);
+        json.end_object();
+      }
       json.end_object();
       tools::write_file_atomically(o.report, json.str());
     }
+    if(!o.deviation_map.empty())
+      tools::write_deviation_maps(o.deviation_map, output, input, deviations, report.target_edge_length);
     if(!o.plots.empty())
       tools::write_file_atomically(o.plots + "/quality.svg",
                                    tools::quality_histograms_svg({{"input: " + o.input, before}, {"remeshed: " + o.output, after}},
@@ -452,6 +475,11 @@ int main(int argc, char** argv)
             << "); seconds: segmentation " << statistics.seconds_segmentation
             << ", flattening " << statistics.seconds_flattening << ", meshing and pull-back " << statistics.seconds_meshing_stage
             << ", gluing " << statistics.seconds_gluing << "\n";
+  if(!o.deviation_map.empty())
+    std::cout << "  distance of the output's faces to the input, in target lengths: "
+              << tools::deviation_histogram_line(deviations.of_mesh_faces, report.target_edge_length)
+              << "\n  distance of the input's faces to the output: "
+              << tools::deviation_histogram_line(deviations.of_reference_faces, report.target_edge_length) << "\n";
   if(std::isfinite(report.smallest_gap))
     std::cout << "  sheets of the input " << report.smallest_gap << " apart at (" << report.smallest_gap_point[0] << ", "
               << report.smallest_gap_point[1] << ", " << report.smallest_gap_point[2] << "); the gaps shortened the target at "

@@ -1,6 +1,8 @@
 // Tests of the quality measures against hand-computed triangles, and of the comparison with a
-// reference mesh on deliberately displaced and self-intersecting copies.
+// reference mesh (Hausdorff distances and the deviation of each face) on deliberately displaced
+// and self-intersecting copies.
 
+#include <CGAL/Conformal_remeshing/face_deviations.h>
 #include <CGAL/Conformal_remeshing/mesh_quality.h>
 
 #include <cad_like_models.h>
@@ -331,4 +333,73 @@ TEST(ReferenceComparison, CoverOfACadPlateIsItsSurfaceWithoutTheFans)
   };
   for(const Fast::Point_3& q : queries)
     EXPECT_NEAR(distance_to(cover, q), distance_to(faces, q), 1e-9 * c.reference_diagonal) << q;
+}
+
+TEST(FaceDeviations, OnlyTheFacesAroundARaisedVertexStrayAndByHowMuch)
+{
+  const Mesh reference = grid(8);
+  Mesh raised = reference;
+  const double h = 0.5;
+  Mesh::Vertex_index top;
+  for(auto v : raised.vertices())
+    if(raised.point(v) == Point(4, 4, 0))
+      raised.point(top = v) = Point(4, 4, h);
+  const CR::Face_deviations d = CR::face_deviations(raised, reference);
+  ASSERT_EQ(d.of_mesh_faces.size(), raised.number_of_faces());
+  ASSERT_EQ(d.of_reference_faces.size(), reference.number_of_faces());
+  EXPECT_NEAR(d.reference_diagonal, 8 * std::sqrt(2.), 1e-12);
+  // The raised vertex is a corner of its faces, h above the plane; every other face lies in it.
+  std::size_t f = 0, raised_faces = 0;
+  for(auto face : raised.faces())
+  {
+    bool around_top = false;
+    for(auto v : raised.vertices_around_face(raised.halfedge(face)))
+      around_top = around_top || v == top;
+    raised_faces += around_top;
+    if(around_top)
+      EXPECT_DOUBLE_EQ(d.of_mesh_faces[f], h);
+    else
+      EXPECT_EQ(d.of_mesh_faces[f], 0.);
+    ++f;
+  }
+  EXPECT_EQ(raised_faces, 6u); // valence 6 in this grid
+  EXPECT_DOUBLE_EQ(d.largest_of_mesh(), h);
+  // The reference's faces under the raised star are closer to it than h, the others on it.
+  EXPECT_GT(d.largest_of_reference(), 0.1 * h);
+  EXPECT_LT(d.largest_of_reference(), h);
+  const std::size_t on_it = std::size_t(std::count(d.of_reference_faces.begin(), d.of_reference_faces.end(), 0.));
+  EXPECT_GE(on_it, reference.number_of_faces() - 6);
+
+  // The histogram: the faces off the plane in the last bin, the others in the first.
+  const std::vector<double> share = CR::deviation_histogram(d.of_mesh_faces, {1e-9, 0.25 * h});
+  ASSERT_EQ(share.size(), 3u);
+  EXPECT_NEAR(share[0], 1. - 6. / double(raised.number_of_faces()), 1e-12);
+  EXPECT_EQ(share[1], 0.);
+  EXPECT_NEAR(share[2], 6. / double(raised.number_of_faces()), 1e-12);
+}
+
+TEST(FaceDeviations, AFaceAcrossACreaseIsFoundAsFarAsTheHausdorffDistanceSays)
+{
+  // A folded grid (a roof ridge along x = 4) against the flat one: each face's largest distance
+  // is at its highest corner, and over the mesh it is the ridge's height, as for the Hausdorff
+  // distance.
+  const Mesh reference = grid(8);
+  Mesh roof = reference;
+  for(auto v : roof.vertices())
+  {
+    const Point p = roof.point(v);
+    roof.point(v) = Point(p.x(), p.y(), 0.1 * (4. - std::abs(p.x() - 4.)));
+  }
+  const CR::Face_deviations d = CR::face_deviations(roof, reference);
+  const CR::Reference_comparison c = CR::compare_to_reference(roof, reference);
+  EXPECT_NEAR(d.largest_of_mesh(), 0.4, 1e-12);
+  EXPECT_NEAR(d.largest_of_mesh(), c.relative_distance_to_reference * c.reference_diagonal, 1e-9);
+  EXPECT_NEAR(d.largest_of_reference(), c.relative_distance_from_reference * c.reference_diagonal, 1e-3);
+}
+
+TEST(FaceDeviations, RefusesAnEmptyMesh)
+{
+  const Mesh m = grid(2), empty;
+  EXPECT_THROW(CR::face_deviations(empty, m), CR::Error);
+  EXPECT_THROW(CR::face_deviations(m, empty), CR::Error);
 }

@@ -430,56 +430,121 @@ sample_points(const TriangleMesh& mesh, std::size_t samples, unsigned int seed,
 /// searched further, each from its farthest sample to a local maximum of the distance.
 constexpr std::size_t refined_triangles = 256;
 
+/// Closest points on a reference surface, as `approximate_Hausdorff_distance()` finds them, but
+/// with the queries in plain double arithmetic: the samples of a remeshing lie on the reference,
+/// at distance 0, and CAD tessellations have flat bounding boxes, so the filtered sphere-box tests
+/// of the exact-predicates kernel are undecided for many nodes and fall back to exact arithmetic
+/// (a third of the time on a large CAD part). A distance needs no exact predicate: rounding moves
+/// it by a few units in the last place. The tree holds `well_shaped_cover(reference)`, not the
+/// faces: the bounding boxes of a CAD fan's long slivers cover their whole face, and every query
+/// there would open all of them.
+class Distance_to_surface
+{
+public:
+  typedef CGAL::Simple_cartesian<double> Fast;
+  typedef std::vector<Fast::Triangle_3> Triangles;
+  typedef CGAL::AABB_tree<CGAL::AABB_traits<Fast, CGAL::AABB_triangle_primitive<Fast, Triangles::const_iterator> > > Tree;
+
+  template <typename TriangleMesh>
+  explicit Distance_to_surface(const TriangleMesh& reference) : cover_(well_shaped_cover(reference)), tree_(cover_.begin(), cover_.end())
+  {
+    tree_.accelerate_distance_queries();
+  }
+  Distance_to_surface(const Distance_to_surface&) = delete;
+  Distance_to_surface& operator=(const Distance_to_surface&) = delete;
+
+  const Tree& tree() const { return tree_; }
+
+  /// The squared distance of each of `points` to the surface. The points are visited in spatial
+  /// order, and each query starts from the nearer of the previous point's closest point and the
+  /// nearest vertex the tree's search structure finds (CGAL 5.5's parallel loop starts every TBB
+  /// range from one vertex of the mesh): on a large CAD part about 40% less time than
+  /// `approximate_Hausdorff_distance()`.
+  template <typename Concurrency_tag>
+  std::vector<double> squared_distances(const std::vector<Fast::Point_3>& points) const
+  {
+    std::vector<std::size_t> order(points.size());
+    std::iota(order.begin(), order.end(), std::size_t(0));
+    const auto point_of_index = CGAL::make_property_map(points);
+    CGAL::spatial_sort(order.begin(), order.end(), CGAL::Spatial_sort_traits_adapter_3<Fast, decltype(point_of_index)>(point_of_index));
+    constexpr std::size_t block_size = 4096;
+    const std::size_t blocks = (points.size() + block_size - 1) / block_size;
+    std::vector<double> squared_distance(points.size(), 0.);
+    for_each_index<Concurrency_tag>(blocks, [&](std::size_t b) {
+      const std::size_t begin = b * block_size, end = (std::min)(points.size(), begin + block_size);
+      Fast::Point_3 closest = tree_.best_hint(points[order[begin]]).first;
+      for(std::size_t i = begin; i < end; ++i)
+      {
+        const Fast::Point_3& p = points[order[i]];
+        const Fast::Point_3 hint = tree_.best_hint(p).first;
+        if(CGAL::squared_distance(p, hint) < CGAL::squared_distance(p, closest))
+          closest = hint;
+        closest = tree_.closest_point(p, closest);
+        squared_distance[order[i]] = CGAL::squared_distance(p, closest);
+      }
+    });
+    return squared_distance;
+  }
+
+private:
+  Triangles cover_;
+  Tree tree_;
+};
+
+/// The point of triangle `t` farthest from the surface of `tree` near `point_at(t, u, w)`, and its
+/// squared distance: a compass search on (u, w) in the triangle, in six directions, with steps
+/// from a twentieth of its sides down to a ten-thousandth.
+template <typename Tree>
+std::pair<double, CGAL::Simple_cartesian<double>::Point_3>
+farthest_point_near(const Tree& tree, const std::array<CGAL::Simple_cartesian<double>::Point_3, 3>& t, double u, double w)
+{
+  using Point = CGAL::Simple_cartesian<double>::Point_3;
+  const auto at = [&](double cu, double cw) { return point_at(t, cu, cw); };
+  Point best_point = at(u, w), closest = tree.closest_point(best_point);
+  double best = CGAL::squared_distance(best_point, closest);
+  const double directions[6][2] = {{1., 0.}, {-1., 0.}, {0., 1.}, {0., -1.}, {1., -1.}, {-1., 1.}};
+  for(double step = 0.05; step >= 1e-4;)
+  {
+    bool improved = false;
+    for(const auto& d : directions)
+    {
+      const double cu = u + step * d[0], cw = w + step * d[1];
+      if(cu < 0. || cw < 0. || cu + cw > 1.)
+        continue;
+      const Point candidate = at(cu, cw);
+      closest = tree.closest_point(candidate, closest);
+      const double d2 = CGAL::squared_distance(candidate, closest);
+      if(d2 > best)
+      {
+        best = d2;
+        best_point = candidate;
+        u = cu;
+        w = cw;
+        improved = true;
+        break;
+      }
+    }
+    if(!improved)
+      step *= 0.5;
+  }
+  return {best, best_point};
+}
+
 /// The largest distance from `sample_points(mesh, samples, seed)` to `reference` and the sample
-/// at that distance, as
-/// `approximate_Hausdorff_distance()` measures it, but with the closest-point queries in plain
-/// double arithmetic: the samples of a remeshing lie on the reference, at distance 0, and CAD
-/// tessellations have flat bounding boxes, so the filtered sphere-box tests of the
-/// exact-predicates kernel are undecided for many nodes and fall back to exact arithmetic (a
-/// third of the time on a large CAD part). A distance needs no exact predicate: rounding
-/// moves it by a few units in the last place. Each query starts from the nearer of the previous
-/// sample's closest point and the nearest vertex the tree's search structure finds (CGAL 5.5's
-/// parallel loop starts every TBB range from one vertex of the mesh); on a large CAD part this
-/// takes about 40% less time than `approximate_Hausdorff_distance()`. The tree holds
-/// `well_shaped_cover(reference)`, not the faces: the bounding boxes of a CAD fan's long slivers
-/// cover their whole face, and every query there would open all of them.
+/// at that distance, as `approximate_Hausdorff_distance()` measures it (see
+/// `Distance_to_surface`), the triangles of the farthest samples searched further.
 template <typename Concurrency_tag, typename TriangleMesh>
 std::pair<double, std::array<double, 3> > largest_distance_of_samples(const TriangleMesh& mesh, const TriangleMesh& reference,
                                    std::size_t samples, unsigned int seed)
 {
   using Fast = CGAL::Simple_cartesian<double>;
-  using Triangles = std::vector<Fast::Triangle_3>;
-  using Tree = CGAL::AABB_tree<CGAL::AABB_traits<Fast, CGAL::AABB_triangle_primitive<Fast, Triangles::const_iterator> > >;
-
   std::vector<std::array<Fast::Point_3, 3> > triangles;
   std::vector<Face_sample> face_samples;
   std::vector<Fast::Point_3> points = sample_points(mesh, samples, seed, &triangles, &face_samples);
-  // Spatially sorted for the hints, with the place of each face sample kept.
-  std::vector<std::size_t> order(points.size());
-  std::iota(order.begin(), order.end(), std::size_t(0));
-  const auto point_of_index = CGAL::make_property_map(static_cast<const std::vector<Fast::Point_3>&>(points));
-  CGAL::spatial_sort(order.begin(), order.end(), CGAL::Spatial_sort_traits_adapter_3<Fast, decltype(point_of_index)>(point_of_index));
   const std::size_t first_face_sample = points.size() - face_samples.size();
-  const Triangles cover = well_shaped_cover(reference);
-  Tree tree(cover.begin(), cover.end());
-  tree.accelerate_distance_queries();
-
-  constexpr std::size_t block_size = 4096;
-  const std::size_t blocks = (points.size() + block_size - 1) / block_size;
-  std::vector<double> squared_distance(points.size(), 0.);
-  for_each_index<Concurrency_tag>(blocks, [&](std::size_t b) {
-    const std::size_t begin = b * block_size, end = (std::min)(points.size(), begin + block_size);
-    Fast::Point_3 closest = tree.best_hint(points[order[begin]]).first;
-    for(std::size_t i = begin; i < end; ++i)
-    {
-      const Fast::Point_3& p = points[order[i]];
-      const Fast::Point_3 hint = tree.best_hint(p).first;
-      if(CGAL::squared_distance(p, hint) < CGAL::squared_distance(p, closest))
-        closest = hint;
-      closest = tree.closest_point(p, closest);
-      squared_distance[order[i]] = CGAL::squared_distance(p, closest);
-    }
-  });
+  const Distance_to_surface distance(reference);
+  const Distance_to_surface::Tree& tree = distance.tree();
+  const std::vector<double> squared_distance = distance.squared_distances<Concurrency_tag>(points);
   std::size_t farthest = std::size_t(std::max_element(squared_distance.begin(), squared_distance.end()) - squared_distance.begin());
   std::pair<double, Fast::Point_3> largest(squared_distance[farthest], points[farthest]);
 
@@ -504,39 +569,7 @@ std::pair<double, std::array<double, 3> > largest_distance_of_samples(const Tria
   std::vector<std::pair<double, Fast::Point_3> > refined(starts.size());
   for_each_index<Concurrency_tag>(starts.size(), [&](std::size_t s) {
     const Face_sample& start = face_samples[starts[s]];
-    const std::array<Fast::Point_3, 3>& t = triangles[start.triangle];
-    const auto at = [&](double u, double w) { return point_at(t, u, w); };
-    double u = start.u, w = start.w;
-    Fast::Point_3 best_point = at(u, w), closest = tree.closest_point(best_point);
-    double best = CGAL::squared_distance(best_point, closest);
-    // A compass search on (u, w) in the triangle: six directions, steps from a twentieth of its
-    // sides down to a ten-thousandth.
-    const double directions[6][2] = {{1., 0.}, {-1., 0.}, {0., 1.}, {0., -1.}, {1., -1.}, {-1., 1.}};
-    for(double step = 0.05; step >= 1e-4;)
-    {
-      bool improved = false;
-      for(const auto& d : directions)
-      {
-        const double cu = u + step * d[0], cw = w + step * d[1];
-        if(cu < 0. || cw < 0. || cu + cw > 1.)
-          continue;
-        const Fast::Point_3 candidate = at(cu, cw);
-        closest = tree.closest_point(candidate, closest);
-        const double d2 = CGAL::squared_distance(candidate, closest);
-        if(d2 > best)
-        {
-          best = d2;
-          best_point = candidate;
-          u = cu;
-          w = cw;
-          improved = true;
-          break;
-        }
-      }
-      if(!improved)
-        step *= 0.5;
-    }
-    refined[s] = {best, best_point};
+    refined[s] = farthest_point_near(tree, triangles[start.triangle], start.u, start.w);
   });
   for(const auto& r : refined)
     if(r.first > largest.first)
