@@ -25,7 +25,7 @@ sanitizers="-fsanitize=address,undefined -fno-sanitize-recover=undefined -fno-om
 # -O1 keeps the stacks readable and the run short; without NDEBUG, CGAL's assertions stay on.
 # -g1 (function names and line tables, enough for the reports' backtraces) rather than -g: the
 # verifier's test, which runs the whole pipeline, compiled in 326 s instead of 442 s (object
-# 84 MB instead of 192 MB; 2026-11-26, this machine, two compilations side by side).
+# 84 MB instead of 192 MB; two compilations side by side on the 2-core machine).
 cmake -S . -B "$build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_FLAGS_RELEASE="-O1 -g1" \
       -DCMAKE_CXX_FLAGS="$sanitizers" -DCMAKE_EXE_LINKER_FLAGS="$sanitizers" >/dev/null
 cmake --build "$build" -j"$(nproc)" --target test_verifier test_input_checks test_mesh_quality

@@ -4,7 +4,7 @@
 # Exits non-zero when any test fails. Tests are built with -O1 but without NDEBUG, so CGAL's
 # own assertions stay active. -O1 rather than -O2: the build is most of CI's time, and on the
 # 2-core machine test_remeshing.cpp compiled in 173 s instead of 249 s while its tests ran in
-# 20.2 s instead of 19.4 s (2026-11-29). The benchmark programs the tests do not run are left
+# 20.2 s instead of 19.4 s. The benchmark programs the tests do not run are left
 # out of the build (benchmark/Conformal_remeshing/CMakeLists.txt); build them with the
 # benchmarks' scripts, in a Release build.
 set -euo pipefail

@@ -7,7 +7,7 @@
 // histograms: DIR/fig10_<model>.svg per part (input, remesh_conformal, isotropic_remeshing) and
 // DIR/fig10_all_parts.svg over the five parts together, like the paper's figure for the whole car.
 // A run that did not finish is reported with its status, stage and error, never left out. The
-// issue's targets are checked at full scale only: Table 1's times are for its full sizes.
+// speed-up targets are checked at full scale only: Table 1's times are for its full sizes.
 // Exit code: 0 when the summary was written (whatever the runs' outcome), 2 when it could not be.
 
 #include "atomic_file.h"

@@ -4,7 +4,7 @@
 // share of triangles below 25 degrees, mean equiangle skewness, share of edges within
 // [0.7, 1.4] x target, Hausdorff distance both ways relative to the diagonal, self-intersection.
 // Prints a table and writes JSON (atomically, at the end); then, against output size, the
-// meshing stage's speed (issue #5 asks for 100k output vertices per second for meshing plus
+// meshing stage's speed (the goal is 100k output vertices per second for meshing plus
 // pull-back), and where its time goes, phase by phase. With --save-meshes DIR, also writes
 // each model's two outputs as OFF files (and the input of the generated models) into DIR. With
 // --lloyd N, remesh_conformal() runs with lloyd_iterations(N) (CGAL's Lloyd smoothing in the plane).

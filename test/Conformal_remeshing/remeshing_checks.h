@@ -69,7 +69,7 @@ inline void check_topology_and_fidelity(const Mesh& input, const Mesh& output, c
   EXPECT_LT(worst_location, 1e-9 * diagonal(input));
 }
 
-// The quality bars of issue #5: the smallest angle (20 degrees, or less at input corners), fewer
+// The package's quality bars: the smallest angle (20 degrees, or less at input corners), fewer
 // than 1% of the triangles below 25 degrees, a mean equiangle skewness of at most 0.12 and more
 // than 95% of the edges within [0.7, 1.4] x the target length. A test that relaxes one says what
 // is measured (and the user manual's "What holds today" says where the bars are not met yet).

@@ -1,4 +1,4 @@
-# Robustness (issue #8): the verifier's unit tests, the verify_remesh tool, and the tools on the
+# Robustness: the verifier's unit tests, the verify_remesh tool, and the tools on the
 # hostile inputs of data/hostile. Included at the end of CMakeLists.txt, whose functions
 # (conformal_remeshing_add_gtest, conformal_remeshing_add_program_test) and variables (data,
 # cgal_meshes) it uses.

@@ -392,7 +392,7 @@ TEST(ConformalFlatten, SliversFlatInDoubleLengthsAreOpened)
   // retriangulated), with a CAD sliver on each edge of its straight border y = 0: its apex lies
   // 1e-13 off the border, so its largest angle is pi - 4e-13, a valid triangle for exact
   // predicates whose double lengths violate the triangle inequality (the full-scale chassis of
-  // issue #7 has 93 such faces in one patch).
+  // the paper benchmark's arm has 93 such faces in one patch).
   for(double bend : {0., 0.3})
   {
     SCOPED_TRACE("bend " + std::to_string(bend));
@@ -568,7 +568,7 @@ CR::internal::welding::Indexed_patch indexed_patch_of(const Mesh& mesh)
                                                    get(CGAL::face_index, mesh));
 }
 
-// A paper-scale model of issue #7 at a test's size.
+// A model of the paper benchmark at a test's size.
 Mesh small_paper_model(bm::Paper_model model, std::size_t vertices)
 {
   Mesh mesh;
@@ -670,7 +670,7 @@ TEST(ConformalFlatten, FlatFansAreRetriangulatedAndPointsLocatedInTheirInputFace
 TEST(ConformalFlatten, CoplanarRegionsOfACadPartNeedFewFlips)
 {
   // The 10k suspension arm: its planar faces are fans whose Delaunay flips are most of the
-  // flattening's time at scale (issue #7: 92 million at 316k vertices).
+  // flattening's time at scale (92 million at 316k vertices on the paper benchmark's arm).
   const Mesh arm = small_paper_model(bm::Paper_model::suspension_arm, 10000);
   CR::internal::welding::Indexed_patch patch = indexed_patch_of(arm);
   auto flips = [&] {
@@ -692,7 +692,7 @@ TEST(ConformalFlatten, CoplanarRegionsOfACadPartNeedFewFlips)
 
 TEST(ConformalFlatten, BendsUnfoldWithThePlanarFacesAroundThemIntoOneRegion)
 {
-  // A small chassis rail of issue #7: each side of its hat section (flanges, walls and web,
+  // A small chassis rail of the paper benchmark: each side of its hat section (flanges, walls and web,
   // joined by bends tessellated as strips of slivers spanning the rail's length) is developable.
   // Retriangulating the planar faces alone left the flips between them and the bends, 17.8
   // million on the full-scale rail.
@@ -732,7 +732,7 @@ TEST(ConformalFlatten, GridPointsInCoplanarRegionsSpareTheRefinementItsFlips)
 {
   // The refinement to a maximum edge length split the long edges of a planar face's
   // triangulation (its vertices all on its outline) one at a time, with two dozen flips each on
-  // issue #7's arm, and every point pulled back walked back through them. Grid points added in
+  // the paper benchmark's arm, and every point pulled back walked back through them. Grid points added in
   // the plane leave it little to do there, and lie on the input faces they are located in.
   const Mesh arm = small_paper_model(bm::Paper_model::suspension_arm, 10000);
   const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(arm);

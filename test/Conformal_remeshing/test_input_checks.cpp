@@ -521,7 +521,7 @@ TEST(Readers, UnreadableFilesNameTheFileAndTheReason)
   }
 }
 
-// --- hostile inputs (issue #8) ---------------------------------------------------------------
+// --- hostile inputs -----------------------------------------------------------------------------
 // Every crafted file of data/hostile has a defined outcome: an Error naming the file and the
 // reason, or a report of its defects and topology (with a mesh when the soup is one).
 

@@ -44,8 +44,8 @@ TEST(RemeshConformal, FineSphericalCapHasItsEdgesWithinTheRange)
   // grows a lattice of one planar spacing from the middle, whose surface edges shrink with the
   // map's scale toward the border (1.08 to 0.85 times the target), and where it meets the mesh
   // grown from the border the splits of the long edges pile up: 94.6% of the edges were within
-  // [0.7, 1.4] times the target until the short ones were collapsed after the splits, 99.4% with
-  // the collapses (2026-11-27).
+  // [0.7, 1.4] times the target without the collapse of the short ones after the splits, 99.4%
+  // with it.
   Mesh mesh;
   bm::make_spherical_cap(mesh, 120., 160, 480);
   CR::Remeshing_statistics statistics;
@@ -110,8 +110,8 @@ TEST(RemeshConformal, CgalFemurTinyAnnulusWhoseOuterLoopCutOffItsHole)
   // the hole off in the plane: every chord of the hole failed to glue, however dense (up to 64
   // times), and the remesher gave up. The failing patch's other curves are now sampled more
   // densely too. The femur's mesh: smallest angle 17.7 degrees, mean skewness 0.123, 88% of the
-  // edges within [0.7, 1.4] times the target by refinement alone (not analysed yet; the issue's
-  // bars are for its models).
+  // edges within [0.7, 1.4] times the target by refinement alone (not analysed; the quality
+  // bars are for the benchmark's models).
   Mesh mesh;
   ASSERT_TRUE(CR::read_and_check_mesh(std::string(CONFORMAL_REMESHING_CGAL_DATA) + "/meshes/femur.off", mesh).is_valid());
   const CR::Remeshing_report report
@@ -136,7 +136,7 @@ TEST(RemeshConformal, FrontalInsertionAgainstRefinementAlone)
 {
   // The benchmark's CAD sheet with one hole (sliver fans on a bent sheet): from frontally
   // inserted points (the default) and by Delaunay refinement alone with one Laplacian pass (the
-  // planar stage until 2026-12-01), both meet the issue's bars; the frontal mesh is much more
+  // planar stage without frontal insertion), both meet the quality bars; the frontal mesh is much more
   // regular (measured: mean skewness 0.043 against 0.102).
   Mesh mesh, fronted, refined;
   bm::Perforated_plate_parameters p;
@@ -367,7 +367,7 @@ TEST(RemeshConformal, LocationsInSliversAreExact)
 
 TEST(RemeshConformal, AMillionFacesWithOneBadFaceAreRefusedAtOnce)
 {
-  // Issue #8's hostile input: a flat grid of 708 x 707 unit squares (1,001,112 faces) in which
+  // A hostile input: a flat grid of 708 x 707 unit squares (1,001,112 faces) in which
   // one vertex sits exactly on the diagonal of its square, making one face of zero area and no
   // other. The remesher names that face and stops before any work (time printed, not asserted).
   const int nx = 708, ny = 707;
@@ -409,7 +409,7 @@ TEST(RemeshConformal, BadParametersAreRefused)
                              CR::Error_code::INVALID_INPUT, {"Lloyd iterations"});
 }
 
-// Issue #8: maximum_running_time stops remesh_conformal() and conformal_flatten() with
+// maximum_running_time stops remesh_conformal() and conformal_flatten() with
 // TIME_LIMIT_EXCEEDED, a message that says where, and the output untouched.
 TEST(RemeshConformal, TimeLimit)
 {

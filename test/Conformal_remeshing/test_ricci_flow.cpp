@@ -855,7 +855,7 @@ TEST(RicciFlow, MultiprecisionFlow)
     EXPECT_NEAR(static_cast<double>(r.conformal_factors[v]), rd.conformal_factors[v], 1e-9);
 }
 
-// Issue #8: a flow that does not converge returns its best state with NOT_CONVERGED.
+// A flow that does not converge returns its best state with NOT_CONVERGED.
 TEST(RicciFlow, NonConvergenceReturnsTheBestState)
 {
   const Soup s = cad_sliver_disc(20, 61, 0.4, 0.15); // converges in 7 iterations

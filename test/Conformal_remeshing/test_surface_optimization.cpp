@@ -184,7 +184,7 @@ TEST(SurfaceOptimization, KeepsTheDomainAndImprovesTheShapesOnTheSurface)
   EXPECT_LE(longest_edge(c.triangles, c.positions), (std::max)(0.07, longest_before) * (1. + 1e-12));
   EXPECT_GT(after.regular, before.regular);
   EXPECT_LT(after.mean_skewness, before.mean_skewness - 0.02);
-  // Issue #5's bar of 0.12 is for whole remeshings (checked in remeshing_checks.h); on this small
+  // The bar of 0.12 is for whole remeshings (checked in remeshing_checks.h); on this small
   // domain a large share of the triangles touch the fixed boundary samples.
   EXPECT_LT(after.mean_skewness, 0.125);
 }

@@ -1,4 +1,4 @@
-// Tests of remesh_conformal() on any topology (issue #6): segmentation into poly-annuli, shared
+// Tests of remesh_conformal() on any topology: segmentation into poly-annuli, shared
 // patch boundaries glued into one watertight mesh, features, user patches and cutting planes.
 
 #include <CGAL/Conformal_remeshing/IO/read_mesh.h>
@@ -211,7 +211,7 @@ TEST(RemeshAnyTopology, WhereTheOutputIntersectsItselfItIsMeshedAgainFiner)
   remeshing_checks::check_topology_and_fidelity(sheet, output, locations);
 }
 
-// Issue #8's hostile inputs that need the whole pipeline: each has a defined outcome.
+// Hostile inputs that need the whole pipeline: each has a defined outcome.
 TEST(HostileInputs, TinyHoleNextToAHugeOne)
 {
   // A flat sheet (120 x 80) with a hole of radius 30 and one of radius 1e-4: 1e-6 of the
@@ -398,8 +398,8 @@ TEST(RemeshAnyTopology, UserPatches)
 // and the thinnest triangles leaned on those cuts until the flips after gluing (smallest angle
 // 4.9 degrees before them, 17.8 after, 16.9 since the kept tips changed that patch's mesh, 20.7
 // since pieces of cut shorter than 0.3 target lengths do not end at a turn: the worst triangle
-// had two samples 0.18 target lengths apart). Issue #6's 20 degrees and mean skewness of 0.12 are
-// held (0.118 since 2026-11-27).
+// had two samples 0.18 target lengths apart). The bars of 20 degrees and a mean skewness of 0.12 are
+// held (0.118).
 TEST(RemeshAnyTopology, CgalElephantGenusThree)
 {
   Mesh elephant;
@@ -408,14 +408,10 @@ TEST(RemeshAnyTopology, CgalElephantGenusThree)
   // Issue 6's bars (20 degrees, mean skewness 0.12), with the angle held higher: the samples of
   // the cuts and their neighbours, moved after gluing, took it from 20.7 to 28.4 degrees (and the
   // mean skewness from 0.1242 to 0.1170).
-  // Its edges within [0.7, 1.4] times the target (issue #5's single-patch bar, which issue #6
-  // does not set): 95.5% until the long chords on its tightly curved parts came to be split
-  // (2026-11-27), whose halves fall under 0.7 times the target; 94.65% after; 94.23% since its
-  // tips are kept at 0.03 instead of 0.1 target lengths, with seeded rings around them (the same
-  // day; its mean skewness 0.1195 -> 0.1177, its smallest angle 26.3 -> 27.6 degrees), held here;
-  // 94.8% since the short edges are collapsed after the splits (mean skewness 0.1116).
-  // With frontal insertion (2026-12-01): mean skewness 0.099, smallest angle 24.6 degrees (one
-  // triangle below 25, 0.005%), so the angle is held at 24.
+  // Its edges within [0.7, 1.4] times the target (the single-patch bar, which the any-topology
+  // bars do not set): the halves of the long chords split on its tightly curved parts fall under
+  // 0.7 times the target, so 94% is held (94.8% measured). Mean skewness 0.099, smallest angle
+  // 24.6 degrees (one triangle below 25, 0.005%), so the angle is held at 24.
   CR::Remeshing_statistics statistics;
   check_remeshing(elephant, remeshing_checks::Quality_bars(24.).edge_share_above(0.94), CR::parameters::statistics(std::ref(statistics)));
   EXPECT_GT(statistics.flips_after_gluing, 0u);
@@ -468,7 +464,7 @@ TEST(RemeshAnyTopology, FlattenPolyAnnuliBisectsAndReturnsTheFinalPatches)
                              CR::Error_code::INVALID_INPUT, {"flatten_poly_annuli: the maximum scale ratio must be above 1"});
 }
 
-// The wall of a drilled hole (issue #6's brake disc: radius 5, height 28, slivers from the rims
+// The wall of a drilled hole (the paper's brake disc: radius 5, height 28, slivers from the rims
 // to the mid-plane) is a tube: the map's scale grows like exp(2 pi z / C) along it, and at twice
 // the target, which other patches get, one flat triangle spans a factor of several. It is
 // flattened at a tenth of its circumference; a frustum whose loops differ sixfold is no tube.
@@ -504,7 +500,7 @@ TEST(RemeshAnyTopology, TubesAreFlattenedAtATenthOfTheirCircumference)
   EXPECT_EQ(CR::internal::flow_edge_length(not_a_tube, 2. * h), 2. * h);
 }
 
-// CGAL's joint (genus 2, CAD slivers down to 0.5 degrees): all of issue #6's shape bars.
+// CGAL's joint (genus 2, CAD slivers down to 0.5 degrees): all of the shape bars.
 TEST(RemeshAnyTopology, CgalJointGenusTwo)
 {
   Mesh joint;
@@ -567,7 +563,7 @@ TEST(RemeshAnyTopology, SequentialAndParallelAgree)
     EXPECT_EQ(sequential.point(v), parallel.point(v));
 }
 
-// --- the pieces that keep thin patches gluable (issue #7's shield) ---------------------------
+// --- the pieces that keep thin patches gluable (the paper's shield) ---------------------------
 
 TEST(ThinPatches, ABisectionMergesThinPiecesBack)
 {

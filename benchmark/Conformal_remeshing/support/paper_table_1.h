@@ -44,7 +44,7 @@ inline const std::vector<Paper_table_1_row>& paper_table_1()
   return rows;
 }
 
-/// The targets: each step at least this many times faster than Table 1 on the same
+/// The speed-up targets: each step at least this many times faster than Table 1 on the same
 /// input size, and under this peak memory at the largest size.
 constexpr double paper_speed_up_target = 20.;
 constexpr double peak_memory_target_megabytes = 8192.;
