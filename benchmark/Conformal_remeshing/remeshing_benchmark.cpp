@@ -313,7 +313,7 @@ void print_peer_row(const std::string& model, const std::string& comparison, con
     return;
   }
   const Measure& m = r.measure;
-  std::cout << std::setw(8) << m.vertices << std::setw(8) << m.min_angle << std::setw(8) << 100. * m.below_30 << std::setw(8)
+  std::cout << std::setw(8) << m.vertices << std::setw(9) << m.min_angle << std::setw(8) << 100. * m.below_30 << std::setw(8)
             << m.skewness << std::setw(10) << m.hausdorff_to << std::setw(10) << m.hausdorff_from << std::setw(6)
             << (m.self_intersects ? "yes" : "no") << (r.within_tolerance ? "" : "  (size not within 5%)") << "\n";
 }
@@ -355,7 +355,7 @@ void write_peer_comparison(std::ostream& out, const Peer_comparison& c, bool sam
 void print_peer_table(const std::vector<Peer_comparison>& comparisons)
 {
   std::cout << "\n" << std::left << std::setw(22) << "model" << std::setw(10) << "method" << std::setw(12) << "comparison"
-            << std::right << std::setw(10) << "target" << std::setw(8) << "sec" << std::setw(8) << "verts" << std::setw(8)
+            << std::right << std::setw(10) << "target" << std::setw(8) << "sec" << std::setw(8) << "verts" << std::setw(9)
             << "minang" << std::setw(8) << "%<30" << std::setw(8) << "skew" << std::setw(10) << "H to" << std::setw(10)
             << "H from" << std::setw(6) << "self" << "\n";
   for(const Peer_comparison& c : comparisons)

@@ -21,6 +21,7 @@
 #include <CGAL/Polygon_mesh_processing/repair_polygon_soup.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdlib>
@@ -388,14 +389,18 @@ struct Tuned_run
 /// Runs `peer` at target lengths tuned until its output has `wanted` vertices within `tolerance`
 /// (a share of `wanted`), `max_runs` runs at most: first at `h`, then by the secant of
 /// log(vertices) against log(length) through the last two runs (the first step assumes vertices
-/// proportional to 1 / length^2). A failed run ends the tuning with that run.
+/// proportional to 1 / length^2), by bisection (of the logarithms) between the longest length
+/// known to give too many vertices and the shortest known to give too few when the secant leaves
+/// that bracket, as counts that jump with the length make it do. A failed run ends the tuning
+/// with that run.
 template <typename Mesh>
 Tuned_run<Mesh> tune_to_vertex_count(const Peer_runner<Mesh>& peer, double h, std::size_t wanted,
-                                     double tolerance = 0.05, int max_runs = 6)
+                                     double tolerance = 0.05, int max_runs = 8)
 {
   Tuned_run<Mesh> best;
   double best_error = std::numeric_limits<double>::infinity();
   double previous_log_h = 0., previous_log_n = 0., slope = -2.;
+  double too_many = 0., too_few = std::numeric_limits<double>::infinity(); // the bracket's lengths
   for(int k = 0; k < max_runs; ++k)
   {
     Peer_run<Mesh> run = peer(h);
@@ -416,6 +421,10 @@ Tuned_run<Mesh> tune_to_vertex_count(const Peer_runner<Mesh>& peer, double h, st
     }
     if(error <= tolerance || n < 1.)
       break;
+    if(n > double(wanted))
+      too_many = std::max(too_many, h);
+    else
+      too_few = std::min(too_few, h);
     if(k > 0 && std::abs(std::log(h) - previous_log_h) > 1e-12)
     {
       const double secant = (std::log(n) - previous_log_n) / (std::log(h) - previous_log_h);
@@ -425,6 +434,8 @@ Tuned_run<Mesh> tune_to_vertex_count(const Peer_runner<Mesh>& peer, double h, st
     previous_log_h = std::log(h);
     previous_log_n = std::log(n);
     h = std::exp(previous_log_h + (std::log(double(wanted)) - previous_log_n) / slope);
+    if(too_many > 0. && too_few < std::numeric_limits<double>::infinity() && !(h > too_many && h < too_few))
+      h = std::sqrt(too_many * too_few);
   }
   best.within_tolerance = best_error <= tolerance;
   return best;
