@@ -9,16 +9,21 @@
 #   scripts/install_dependencies.sh --robustness
 #                                            also what the sanitizer tests and the fuzzers need:
 #                                            Ninja, clang and its fuzzer and sanitizer runtimes
+#   scripts/install_dependencies.sh --benchmarks
+#                                            also the remeshing benchmark's external peers: Gmsh,
+#                                            MeshLab (meshlabserver) and the X server it runs under
 set -euo pipefail
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 
 with_tests=0
 with_robustness=0
+with_benchmarks=0
 for arg in "$@"; do
   case "$arg" in
     --tests) with_tests=1 ;;
     --robustness) with_robustness=1 ;;
-    -h|--help) sed -n '2,11p' "${BASH_SOURCE[0]}"; exit 0 ;;
+    --benchmarks) with_benchmarks=1 ;;
+    -h|--help) sed -n '2,14p' "${BASH_SOURCE[0]}"; exit 0 ;;
     *) echo "install_dependencies.sh: unknown argument '$arg'" >&2; exit 2 ;;
   esac
 done
@@ -30,6 +35,9 @@ if [ "$with_tests" -eq 1 ]; then
 fi
 if [ "$with_robustness" -eq 1 ]; then
   packages+=(ninja-build clang libclang-rt-14-dev)
+fi
+if [ "$with_benchmarks" -eq 1 ]; then
+  packages+=(gmsh meshlab xvfb xauth)
 fi
 
 as_root() {

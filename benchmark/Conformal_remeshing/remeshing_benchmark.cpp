@@ -8,8 +8,13 @@
 // pull-back), and where its time goes, phase by phase. With --save-meshes DIR, also writes
 // each model's two outputs as OFF files (and the input of the generated models) into DIR. With
 // --lloyd N, remesh_conformal() runs with lloyd_iterations(N) (CGAL's Lloyd smoothing in the plane).
+// With --peers, also the peers named (isotropic_remeshing(), Gmsh, MeshLab; support/external_peers.h)
+// at the same target length and, with --same-size, at the target length that gives each peer's
+// output the number of vertices of ours (within 5%); a peer that fails, times out or is not
+// installed is recorded as such, in a fourth table and in each model's "peers" record.
 //
-//   remeshing_benchmark OUT.json [--relative R] [--lloyd N] [--rounds N] [--save-meshes DIR] [MESH ...]
+//   remeshing_benchmark OUT.json [--relative R] [--lloyd N] [--rounds N] [--save-meshes DIR]
+//                      [--peers LIST] [--same-size] [--peer-timeout S] [--no-generated] [MESH ...]
 //
 // Exit code: 0, 1 when a model is refused, 2 for bad arguments or input, or an output that cannot
 // be written.
@@ -21,6 +26,7 @@
 #include "atomic_file.h"
 #include "benchmark_io.h"
 #include "cad_like_models.h"
+#include "external_peers.h"
 #include "test_surfaces.h"
 #include "generated_patches.h"
 #include "isotropic_peer.h"
@@ -62,7 +68,7 @@ struct Measure
 {
   double seconds = 0.;
   std::size_t vertices = 0;
-  double min_angle = 0., below_25 = 0., skewness = 0., edges_in_range = 0., hausdorff_to = 0., hausdorff_from = 0.;
+  double min_angle = 0., below_25 = 0., below_30 = 0., skewness = 0., edges_in_range = 0., hausdorff_to = 0., hausdorff_from = 0.;
   bool self_intersects = false;
 };
 
@@ -74,6 +80,7 @@ Measure measure(const Mesh& input, const Mesh& output, double h, double seconds)
   const CR::Mesh_quality_report q = CR::mesh_quality(output);
   m.min_angle = q.minimum_angle.min;
   m.below_25 = q.share_with_minimum_angle_below(25.);
+  m.below_30 = q.share_with_minimum_angle_below(30.);
   m.skewness = q.skewness.mean;
   m.edges_in_range = CR::share_of_edges_with_length_in(output, 0.7 * h, 1.4 * h);
   const CR::Reference_comparison c = CR::compare_to_reference(output, input);
@@ -101,12 +108,18 @@ void write_json(std::ostream& out, const Measure& m)
 
 std::string usage()
 {
-  return "usage: remeshing_benchmark OUT.json [--relative R] [--lloyd N] [--rounds N] [--save-meshes DIR] [MESH ...]\n"
+  return "usage: remeshing_benchmark OUT.json [--relative R] [--lloyd N] [--rounds N] [--save-meshes DIR]\n"
+         "                           [--peers LIST] [--same-size] [--peer-timeout S] [--no-generated] [MESH ...]\n"
          "  --relative R        target edge length over the bounding-box diagonal, 0 < R < 1 (default 0.01)\n"
          "  --lloyd N           remesh_conformal() with N Lloyd iterations in the plane, 0 to 1000 (default 0)\n"
          "  --rounds N          remesh_conformal() with N optimization rounds on the surface, 0 to 100 (default 5)\n"
          "  --save-meshes DIR   write DIR/<model>_conformal.off and DIR/<model>_isotropic.off for each model,\n"
-         "                      and DIR/<model>_input.off for the generated ones; DIR is created if missing";
+         "                      and DIR/<model>_input.off for the generated ones; DIR is created if missing\n"
+         "  --peers LIST        the peers compared in the \"peers\" records, of isotropic, gmsh and meshlab, comma-separated\n"
+         "                      (default: isotropic alone, in the \"isotropic\" record only)\n"
+         "  --same-size         also compare each peer at the target length that gives it our number of vertices, within 5%\n"
+         "  --peer-timeout S    seconds each run of gmsh or meshlabserver may take (default 600)\n"
+         "  --no-generated      only the mesh files given, not the generated patches";
 }
 
 // A model's name as the start of a file name: lowercase, each run of spaces and commas (and of any
@@ -141,6 +154,223 @@ std::string json_string(const std::string& s)
   return text;
 }
 
+// The peers of the "peers" records and how they run.
+struct Peer_options
+{
+  std::vector<std::string> peers;  // of "isotropic", "gmsh", "meshlab", in the order given
+  bool same_size = false;          // also the comparison at our output size
+  double timeout_seconds = 600.;   // per run of an external peer
+  bool requested() const { return !peers.empty() || same_size; }
+};
+
+const std::vector<std::string>& known_peers()
+{
+  static const std::vector<std::string> names{"isotropic", "gmsh", "meshlab"};
+  return names;
+}
+
+// The comma-separated list of --peers, each name known and given once.
+std::vector<std::string> parse_peers(const std::string& list)
+{
+  std::vector<std::string> peers;
+  std::istringstream in(list);
+  for(std::string name; std::getline(in, name, ',');)
+  {
+    if(std::find(known_peers().begin(), known_peers().end(), name) == known_peers().end())
+      throw std::invalid_argument("--peers: unknown peer '" + name + "' (isotropic, gmsh, meshlab)");
+    if(std::find(peers.begin(), peers.end(), name) == peers.end())
+      peers.push_back(name);
+  }
+  if(peers.empty())
+    throw std::invalid_argument("--peers: no peer in '" + list + "'");
+  return peers;
+}
+
+// One peer in one comparison: how its run ended, at which target length, and its measures.
+struct Peer_record
+{
+  std::string peer;
+  bm::Peer_status status = bm::Peer_status::failed;
+  std::string reason;
+  double target_edge_length = 0.;
+  int runs = 0;                 // of the tuning, for the comparison at the same size
+  bool within_tolerance = true; // the output size within 5% of ours (same size only)
+  Measure measure;
+};
+
+// A run of `peer` on `input` at target length h: isotropic_remeshing() in this process, the others
+// as subprocesses.
+bm::Peer_runner<Mesh> peer_runner(const std::string& peer, const Mesh& input, double timeout_seconds)
+{
+  if(peer == "gmsh")
+    return [&input, timeout_seconds](double h) { return bm::run_gmsh_peer(input, h, timeout_seconds); };
+  if(peer == "meshlab")
+    return [&input, timeout_seconds](double h) { return bm::run_meshlab_peer(input, h, timeout_seconds); };
+  return [&input](double h) {
+    bm::Peer_run<Mesh> run;
+    run.mesh = input;
+    run.seconds = bm::wall_seconds([&] { bm::run_isotropic_peer(run.mesh, h); });
+    run.status = bm::Peer_status::ok;
+    return run;
+  };
+}
+
+// The record of a finished run: its measures, or a failure when they cannot be taken.
+Peer_record record_of(const std::string& peer, bm::Peer_run<Mesh>& run, const Mesh& input, double h, double seconds)
+{
+  Peer_record r;
+  r.peer = peer;
+  r.status = run.status;
+  r.reason = run.reason;
+  r.target_edge_length = h;
+  if(run.status != bm::Peer_status::ok)
+  {
+    r.measure.seconds = run.seconds;
+    return r;
+  }
+  try
+  {
+    r.measure = measure(input, run.mesh, h, seconds);
+  }
+  catch(const std::exception& e)
+  {
+    r.status = bm::Peer_status::failed;
+    r.reason = std::string("output not measurable: ") + e.what();
+  }
+  return r;
+}
+
+// Each peer at our target length h, timed as isotropic_remeshing() is (median of 3 runs; one run
+// when the first fails). The isotropic record is the one measured for the "isotropic" field.
+std::vector<Peer_record> compare_at_same_length(const Mesh& input, double h, const Measure& isotropic, const Peer_options& options)
+{
+  std::vector<Peer_record> records;
+  for(const std::string& peer : options.peers)
+  {
+    if(peer == "isotropic")
+    {
+      records.push_back(Peer_record{peer, bm::Peer_status::ok, "", h, 1, true, isotropic});
+      continue;
+    }
+    const bm::Peer_runner<Mesh> run_peer = peer_runner(peer, input, options.timeout_seconds);
+    bm::Peer_run<Mesh> run = run_peer(h);
+    std::vector<double> seconds{run.seconds};
+    for(int k = 1; k < 3 && run.status == bm::Peer_status::ok; ++k)
+      seconds.push_back(run_peer(h).seconds);
+    records.push_back(record_of(peer, run, input, h, bm::median(seconds)));
+  }
+  return records;
+}
+
+// Each peer at the target length tuned until its output has our number of vertices within 5%,
+// timed by the run whose output is measured.
+std::vector<Peer_record> compare_at_same_size(const Mesh& input, double h, std::size_t vertices, const Peer_options& options)
+{
+  std::vector<Peer_record> records;
+  for(const std::string& peer : options.peers)
+  {
+    bm::Tuned_run<Mesh> tuned = bm::tune_to_vertex_count(peer_runner(peer, input, options.timeout_seconds), h, vertices);
+    Peer_record r = record_of(peer, tuned.run, input, tuned.target_edge_length, tuned.run.seconds);
+    r.runs = tuned.runs;
+    r.within_tolerance = tuned.within_tolerance;
+    records.push_back(std::move(r));
+  }
+  return records;
+}
+
+// The JSON object of one comparison: one field per peer.
+void write_peer_records(std::ostream& out, const std::vector<Peer_record>& records, bool same_size)
+{
+  out << "{";
+  for(std::size_t i = 0; i < records.size(); ++i)
+  {
+    const Peer_record& r = records[i];
+    out << (i ? ", " : "") << json_string(r.peer) << ": {\"status\": " << json_string(bm::peer_status_name(r.status));
+    if(!r.reason.empty())
+      out << ", \"reason\": " << json_string(r.reason);
+    out << ", \"target_edge_length\": " << r.target_edge_length;
+    if(same_size)
+      out << ", \"runs\": " << r.runs << ", \"within_5_percent\": " << (r.within_tolerance ? "true" : "false");
+    out << ", \"seconds\": " << r.measure.seconds;
+    if(r.status == bm::Peer_status::ok)
+    {
+      out << ", \"share_below_30\": " << r.measure.below_30 << ", \"measures\": ";
+      write_json(out, r.measure);
+    }
+    out << "}";
+  }
+  out << "}";
+}
+
+// A row of the peers table.
+void print_peer_row(const std::string& model, const std::string& comparison, const Peer_record& r)
+{
+  std::cout << std::left << std::setw(22) << model << std::setw(10) << r.peer << std::setw(12) << comparison << std::right
+            << std::setprecision(3) << std::setw(10) << r.target_edge_length << std::setw(8) << r.measure.seconds;
+  if(r.status != bm::Peer_status::ok)
+  {
+    std::cout << "  " << bm::peer_status_name(r.status) << (r.reason.empty() ? "" : ": ") << r.reason << "\n";
+    return;
+  }
+  const Measure& m = r.measure;
+  std::cout << std::setw(8) << m.vertices << std::setw(9) << m.min_angle << std::setw(8) << 100. * m.below_30 << std::setw(8)
+            << m.skewness << std::setw(10) << m.hausdorff_to << std::setw(10) << m.hausdorff_from << std::setw(6)
+            << (m.self_intersects ? "yes" : "no") << (r.within_tolerance ? "" : "  (size not within 5%)") << "\n";
+}
+
+// The comparisons of one model, for the fourth table.
+struct Peer_comparison
+{
+  std::string model;
+  Peer_record ours;
+  std::vector<Peer_record> same_length, same_size;
+};
+
+// Ours beside each peer at the same length, then at the same size when asked.
+Peer_comparison compare_with_peers(const std::string& model, const Mesh& input, double h, const Measure& ours,
+                                   const Measure& isotropic, const Peer_options& options)
+{
+  Peer_comparison c{model, Peer_record{"conformal", bm::Peer_status::ok, "", h, 1, true, ours}, {}, {}};
+  c.same_length = compare_at_same_length(input, h, isotropic, options);
+  if(options.same_size)
+    c.same_size = compare_at_same_size(input, h, ours.vertices, options);
+  return c;
+}
+
+// The "peers" record of a model: ours (with the share below 30 degrees), then each comparison.
+void write_peer_comparison(std::ostream& out, const Peer_comparison& c, bool same_size)
+{
+  out << "{\"conformal\": {\"share_below_30\": " << c.ours.measure.below_30 << ", \"measures\": ";
+  write_json(out, c.ours.measure);
+  out << "}, \"same_length\": ";
+  write_peer_records(out, c.same_length, false);
+  if(same_size)
+  {
+    out << ", \"same_size\": ";
+    write_peer_records(out, c.same_size, true);
+  }
+  out << "}";
+}
+
+void print_peer_table(const std::vector<Peer_comparison>& comparisons)
+{
+  std::cout << "\n" << std::left << std::setw(22) << "model" << std::setw(10) << "method" << std::setw(12) << "comparison"
+            << std::right << std::setw(10) << "target" << std::setw(8) << "sec" << std::setw(8) << "verts" << std::setw(9)
+            << "minang" << std::setw(8) << "%<30" << std::setw(8) << "skew" << std::setw(10) << "H to" << std::setw(10)
+            << "H from" << std::setw(6) << "self" << "\n";
+  for(const Peer_comparison& c : comparisons)
+  {
+    print_peer_row(c.model, "", c.ours);
+    for(const Peer_record& r : c.same_length)
+      print_peer_row("", "same length", r);
+    for(const Peer_record& r : c.same_size)
+      print_peer_row("", "same size", r);
+  }
+  std::cout << "(peers: target = the peer's target edge length; sec: median of 3 runs at the same length, the measured "
+               "run at the same size, of the subprocess for gmsh and meshlab; %<30: share of triangles with an angle "
+               "below 30 degrees; H: Hausdorff distance to and from the input over its diagonal)\n";
+}
+
 struct Model
 {
   std::string name;      // as printed and recorded in the JSON
@@ -168,6 +398,8 @@ int main(int argc, char** argv)
   int lloyd = 0;
   int rounds = 5; // remesh_conformal()'s default
   std::string mesh_directory; // empty: no --save-meshes
+  Peer_options peer_options;
+  bool with_generated = true;
   std::vector<Model> models;
   try
   {
@@ -213,6 +445,32 @@ int main(int argc, char** argv)
         mesh_directory = argv[++i];
         continue;
       }
+      if(arg == "--peers")
+      {
+        if(i + 1 >= argc)
+          throw std::invalid_argument("--peers: missing list");
+        peer_options.peers = parse_peers(argv[++i]);
+        continue;
+      }
+      if(arg == "--peer-timeout")
+      {
+        if(i + 1 >= argc)
+          throw std::invalid_argument("--peer-timeout: missing value");
+        peer_options.timeout_seconds = bm::parse_double(arg, argv[++i]);
+        if(!(peer_options.timeout_seconds > 0.))
+          throw std::invalid_argument("--peer-timeout: must be greater than 0: '" + std::string(argv[i]) + "'");
+        continue;
+      }
+      if(arg == "--same-size")
+      {
+        peer_options.same_size = true;
+        continue;
+      }
+      if(arg == "--no-generated")
+      {
+        with_generated = false;
+        continue;
+      }
       if(!arg.empty() && arg[0] == '-')
         throw std::invalid_argument("unknown option '" + arg + "'");
       Model m;
@@ -221,7 +479,9 @@ int main(int argc, char** argv)
       files.push_back(std::move(m));
     }
     bm::check_writable(out_path);
-    for(std::pair<std::string, Mesh>& g : bm::generated_patches<Mesh>(true))
+    if(peer_options.same_size && peer_options.peers.empty())
+      peer_options.peers = {"isotropic"};
+    for(std::pair<std::string, Mesh>& g : with_generated ? bm::generated_patches<Mesh>(true) : std::vector<std::pair<std::string, Mesh> >())
     {
       Model m;
       m.name = g.first;
@@ -300,6 +560,7 @@ int main(int argc, char** argv)
     double rate(double seconds) const { return per_second(vertices, seconds); }
   };
   std::vector<Speed> speeds;
+  std::vector<Peer_comparison> comparisons; // with --peers or --same-size
   // The phases of the planar meshing and of the optimization, visited in the third table's order.
   typedef double CR::Meshing_phase_seconds::*Phase;
   for(std::size_t k = 0; k < models.size(); ++k)
@@ -391,6 +652,12 @@ int main(int argc, char** argv)
     json << "}";
     json << ", \"isotropic\": ";
     write_json(json, b);
+    if(peer_options.requested())
+    {
+      comparisons.push_back(compare_with_peers(model.name, input, h, a, b, peer_options));
+      json << ", \"peers\": ";
+      write_peer_comparison(json, comparisons.back(), peer_options.same_size);
+    }
     json << "}";
   }
   json << "\n]\n";
@@ -425,6 +692,8 @@ int main(int argc, char** argv)
                "insertion and CGAL's refinement, the smoothing in the plane with its refinement; o: the lifts and adjacency, the first rounds "
                "of flips and smoothing, the split passes with their rounds, the collapses with their round, the skewness "
                "passes, the angle passes)\n";
+  if(peer_options.requested())
+    print_peer_table(comparisons);
   if(!mesh_directory.empty())
     std::cout << "meshes: " << mesh_directory << "\n";
   try
