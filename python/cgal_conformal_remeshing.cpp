@@ -733,7 +733,8 @@ void require_callable(const py::object& f, const char* name)
 // --- the functions ------------------------------------------------------------------------------
 
 py::tuple remesh(const py::object& V, const py::object& F, std::optional<double> target_edge_length,
-                 double relative_edge_length, double minimum_angle, double features_angle, bool features_fallback,
+                 double relative_edge_length, double minimum_angle, double features_angle, double crease_angle,
+                 bool features_fallback,
                  std::optional<double> chord_error, const py::object& sizing, std::optional<double> time_limit,
                  const py::object& progress, bool repair, int optimization_rounds, int lloyd_iterations,
                  bool frontal_insertion)
@@ -790,6 +791,7 @@ py::tuple remesh(const py::object& V, const py::object& F, std::optional<double>
                   P::target_edge_length(target,
                   P::minimum_angle(minimum_angle,
                   P::features_angle(features_angle,
+                  P::crease_angle(crease_angle,
                   P::features_fallback(features_fallback,
                   P::maximum_chord_error(chord_error ? *chord_error : 0.,
                   P::sizing_field(sizing_field,
@@ -798,7 +800,7 @@ py::tuple remesh(const py::object& V, const py::object& F, std::optional<double>
                   P::repair_input(repair,
                   P::optimization_rounds(optimization_rounds,
                   P::lloyd_iterations(lloyd_iterations,
-                  P::frontal_insertion(frontal_insertion)))))))))))));
+                  P::frontal_insertion(frontal_insertion))))))))))))));
   struct Result
   {
     Mesh output;
@@ -925,11 +927,12 @@ and raises KeyboardInterrupt.)doc";
 
   m.def("remesh", &remesh, py::arg("V"), py::arg("F"), py::kw_only(), py::arg("target_edge_length") = py::none(),
         py::arg("relative_edge_length") = 0.01, py::arg("minimum_angle") = 28., py::arg("features_angle") = 60.,
-        py::arg("features_fallback") = true, py::arg("chord_error") = py::none(), py::arg("sizing") = py::none(),
+        py::arg("crease_angle") = 40., py::arg("features_fallback") = true, py::arg("chord_error") = py::none(), py::arg("sizing") = py::none(),
         py::arg("time_limit") = py::none(), py::arg("progress") = py::none(), py::arg("repair") = true,
         py::arg("optimization_rounds") = 5, py::arg("lloyd_iterations") = 0, py::arg("frontal_insertion") = true,
         R"doc(remesh(V, F, *, target_edge_length=None, relative_edge_length=0.01, minimum_angle=28.0,
-       features_angle=60.0, features_fallback=True, chord_error=None, sizing=None, time_limit=None,
+       features_angle=60.0, crease_angle=40.0, features_fallback=True, chord_error=None, sizing=None,
+       time_limit=None,
        progress=None, repair=True, optimization_rounds=5, lloyd_iterations=0,
        frontal_insertion=True) -> (V2, F2, report)
 
@@ -941,6 +944,9 @@ minimum_angle: degrees, in (0, 34].
 features_angle: dihedral angle in degrees above which an edge is a sharp feature (0: none);
     with features_fallback, features are dropped when a patch cannot be flattened with them
     (report['features_dropped'] says so).
+crease_angle: creases above this angle (and not above features_angle) are features too where
+    they form chains at least 5 target lengths long, from sharp features to sharp features, with
+    no parallel crease within one (a CAD part's edges, such as a chamfer's); 0: none.
 chord_error: curvature-adaptive sizing: largest deviation of a chord from the surface.
 sizing: a callable taking a k x 3 float64 array of points on the surface and returning k
     edge lengths; the library asks for one point at a time (k = 1). The target edge length

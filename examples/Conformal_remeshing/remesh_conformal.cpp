@@ -1,7 +1,7 @@
 // remesh_conformal: remeshes a surface by conformal flattening (CGAL::remesh_conformal()).
 //
 //   remesh_conformal IN OUT [--target-edge-length L | --relative-edge-length R] [--min-angle DEG]
-//                    [--features-angle DEG] [--patches FILE] [--cut-plane a,b,c,d]...
+//                    [--features-angle DEG] [--crease-angle DEG] [--patches FILE] [--cut-plane a,b,c,d]...
 //                    [--save-patches DIR] [--sequential] [--report FILE.json] [--plots DIR] [--quiet]
 //                    [--time-limit SECONDS] [--optimization-rounds N] [--lloyd-iterations N] [--chord-error E]
 //                    [--no-frontal] [--no-repair] [--deviation-map PREFIX]
@@ -49,7 +49,7 @@ namespace {
 
 const char* usage =
   "usage: remesh_conformal IN OUT [--target-edge-length L | --relative-edge-length R] [--min-angle DEG]\n"
-  "                        [--features-angle DEG] [--patches FILE] [--cut-plane a,b,c,d]...\n"
+  "                        [--features-angle DEG] [--crease-angle DEG] [--patches FILE] [--cut-plane a,b,c,d]...\n"
   "                        [--save-patches DIR] [--sequential] [--report FILE.json] [--plots DIR] [--quiet]\n"
   "                        [--time-limit SECONDS] [--optimization-rounds N] [--lloyd-iterations N] [--chord-error E]\n"
   "                        [--no-frontal] [--no-repair] [--deviation-map PREFIX]\n"
@@ -60,6 +60,9 @@ const char* usage =
   "                          the planar Delaunay refinement uses at most 20.7)\n"
   "  --features-angle DEG    edges with a dihedral angle above DEG are sharp features (default 60, and none if a\n"
   "                          patch cannot be flattened with them; given, they are kept or the tool fails; 0: none)\n"
+  "  --crease-angle DEG      creases above DEG (and not above --features-angle) are features too where they are a CAD\n"
+  "                          part's edges: chains at least 5 target lengths long with no parallel crease within one\n"
+  "                          (default 40; 0: none)\n"
   "  --patches FILE          user patches: one integer patch id per face of IN, in face order\n"
   "  --cut-plane a,b,c,d     cut the surface by the plane ax+by+cz+d=0 first (repeatable)\n"
   "  --save-patches DIR      DIR/patch_N.off and DIR/patch_N_flattening.svg for every patch (DIR is created)\n"
@@ -88,7 +91,7 @@ const char* usage =
 struct Options
 {
   std::string input, output, report, plots, patches, save_patches, deviation_map;
-  double target = 0., relative = 0.01, min_angle = 28., features_angle = 60.;
+  double target = 0., relative = 0.01, min_angle = 28., features_angle = 60., crease_angle = 40.;
   double time_limit = std::numeric_limits<double>::infinity();
   double chord_error = 0.;
   int optimization_rounds = 5, lloyd_iterations = 0;
@@ -156,6 +159,8 @@ bool parse(int argc, char** argv, Options& o)
       ok = number(o.min_angle);
     else if(arg == "--features-angle")
       ok = o.features_angle_given = number(o.features_angle);
+    else if(arg == "--crease-angle")
+      ok = number(o.crease_angle) && o.crease_angle >= 0.;
     else if(arg == "--patches" && i + 1 < argc)
       o.patches = argv[++i];
     else if(arg == "--cut-plane" && i + 1 < argc)
@@ -298,10 +303,10 @@ int main(int argc, char** argv)
   const double target = o.target > 0. ? o.target : o.relative * diagonal;
   const auto np = CR::parameters::frontal_insertion(o.frontal, CR::parameters::maximum_chord_error(o.chord_error, CR::parameters::optimization_rounds(o.optimization_rounds, CR::parameters::lloyd_iterations(o.lloyd_iterations, CR::parameters::target_edge_length(
     target, CR::parameters::minimum_angle(
-              o.min_angle, CR::parameters::features_angle(
+              o.min_angle, CR::parameters::crease_angle(o.crease_angle, CR::parameters::features_angle(
                              o.features_angle, CR::parameters::cut_planes(
                                                  o.planes, CR::parameters::features_fallback(
-                                                             !o.features_angle_given, CR::parameters::progress(progress, CGAL::parameters::face_patch_map(patch_of)))))))))));
+                                                             !o.features_angle_given, CR::parameters::progress(progress, CGAL::parameters::face_patch_map(patch_of))))))))))));
 
   if(!o.save_patches.empty())
   {
@@ -378,7 +383,7 @@ int main(int argc, char** argv)
       tools::Json_writer json;
       json.begin_object().field("input", o.input).field("output", o.output).field("target_edge_length", report.target_edge_length);
       // The options the output depends on, to rerun it (the sequential or parallel run gives the same).
-      json.key("parameters").begin_object().field("min_angle", o.min_angle).field("features_angle", o.features_angle)
+      json.key("parameters").begin_object().field("min_angle", o.min_angle).field("features_angle", o.features_angle).field("crease_angle", o.crease_angle)
           .field("optimization_rounds", o.optimization_rounds).field("lloyd_iterations", o.lloyd_iterations)
           .field("chord_error", o.chord_error).field("cut_planes", o.planes.size()).field("patches", o.patches)
           .field("repair", o.repair).field("frontal_insertion", o.frontal).end_object();

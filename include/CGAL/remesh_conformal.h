@@ -168,8 +168,8 @@ namespace Conformal_remeshing {
 ///     \cgalParamDefault{the internal face index map of `input`, initialized if needed}
 ///   \cgalParamNEnd
 /// \cgalNamedParamsEnd
-/// The other parameters of `segment_into_poly_annuli()` (`features_angle`, `cut_planes`,
-/// `face_patch_map`, `edge_is_constrained_map`) and of `conformal_flatten()`
+/// The other parameters of `segment_into_poly_annuli()` (`features_angle`, `crease_angle`,
+/// `cut_planes`, `face_patch_map`, `edge_is_constrained_map`) and of `conformal_flatten()`
 /// (`annulus_inner_radius`, `curvature_tolerance`, `number_of_iterations`) are passed on to them.
 ///
 /// \param input the mesh to remesh

@@ -11,6 +11,8 @@
 
 #include <CGAL/Polygon_mesh_processing/connected_components.h>
 #include <CGAL/Polygon_mesh_processing/detect_features.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Polygon_mesh_processing/triangulate_faces.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 #include <CGAL/boost/graph/generators.h>
 #include <CGAL/subdivision_method_3.h>
@@ -326,6 +328,52 @@ TEST(RemeshAnyTopology, FeatureEdgesAreKept)
     }
   EXPECT_EQ(off_feature, 0u);
   EXPECT_NEAR(length_out, length_in, 0.01 * length_in); // chords of circles are a little shorter
+}
+
+// A box of side 10 whose edge at y = 10, z = 10 is chamfered at 45 degrees, `width` wide in y
+// and z: its chamfer's two edges turn by 45 degrees, under the default features angle.
+Mesh chamfered_box(double width)
+{
+  const double c = 10. - width;
+  const std::vector<K::Point_3> points = {{0, 0, 0}, {10, 0, 0}, {10, 10, 0}, {0, 10, 0}, {0, 0, 10}, {10, 0, 10},
+                                          {10, c, 10}, {0, c, 10}, {0, 10, c}, {10, 10, c}};
+  const std::vector<std::vector<std::size_t> > polygons = {
+    {0, 3, 2, 1}, {4, 5, 6, 7}, {7, 6, 9, 8}, {3, 8, 9, 2}, {0, 1, 5, 4}, {1, 2, 9, 6, 5}, {0, 4, 7, 8, 3}};
+  Mesh box;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, box);
+  CGAL::Polygon_mesh_processing::triangulate_faces(box);
+  return box;
+}
+
+TEST(RemeshAnyTopology, AChamfersEdgesAreFollowedBelowTheFeaturesAngle)
+{
+  // The chamfer's edges are creases of 45 degrees, 10 long (57 target lengths): CAD edges, kept
+  // as features, so that the output of this polyhedron lies on it (its vertices on its faces,
+  // its edges along its creases). Without them the output cuts the chamfer's edges.
+  const Mesh box = chamfered_box(3.);
+  CR::Poly_annulus_segmentation with, without;
+  CR::segment_into_poly_annuli(box, with);
+  CR::segment_into_poly_annuli(box, without, CR::parameters::crease_angle(0.));
+  EXPECT_EQ(with.feature_edges, without.feature_edges + 2);
+  Mesh output, rounded;
+  CGAL::remesh_conformal(box, output);
+  CGAL::remesh_conformal(box, rounded, CR::parameters::crease_angle(0.));
+  const CR::Reference_comparison kept = CR::compare_to_reference(output, box), cut = CR::compare_to_reference(rounded, box);
+  EXPECT_LT(kept.relative_hausdorff_distance(), 1e-9);
+  EXPECT_GT(cut.relative_hausdorff_distance(), 1e-4);
+  EXPECT_FALSE(kept.self_intersects);
+}
+
+TEST(RemeshAnyTopology, CreasesCloserThanATargetLengthStayInsideTheirPatch)
+{
+  // A chamfer a tenth of a target length wide (the facets of a coarse fillet): its two creases
+  // are closer than the clearance, so neither becomes a feature, and neither do short folds.
+  const Mesh box = chamfered_box(0.017);
+  CR::Poly_annulus_segmentation with, without;
+  const double h = 0.01 * diagonal(box);
+  CR::segment_into_poly_annuli(box, with, CR::parameters::snap_distance(0.1 * h));
+  CR::segment_into_poly_annuli(box, without, CR::parameters::crease_angle(0., CR::parameters::snap_distance(0.1 * h)));
+  EXPECT_EQ(with.feature_edges, without.feature_edges);
 }
 
 TEST(RemeshAnyTopology, FeatureInsideAPatchIsKept)

@@ -90,6 +90,7 @@ CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(statistics)
 
 // --- `segment_into_poly_annuli()` ---------------------------------------------------------------
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(features_angle) // double, degrees
+CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(crease_angle)   // double, degrees
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(cut_planes)     // std::vector<Epick::Plane_3>
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(snap_distance)  // double, input units
 

@@ -522,19 +522,16 @@ inline double dihedral_turn(const Mesh& m, Segmentation::Edge e)
   return std::acos((std::max)(-1., (std::min)(1., a * b))) * 180. / CGAL_PI;
 }
 
-// Feature chains inside a patch (the same patch on both sides) shorter than `min_length` in all
-// are no features: they separate nothing, and a slit shorter than the target edge length opens
-// so little in the plane that the mesher must split the edges that would join both of its sides
-// (see `mesh_planar_domain()`). Unless an edge of the chain turns by more than `kept_turn`
-// degrees: a crease that sharp is a detail of the shape, which the output would cut off (on a
-// scanned model the short chains are wrinkles that turn much less, and are dropped).
-inline void drop_short_dangling_features(Segmentation& s, double min_length, double kept_turn)
+// The chains of the edges for which `in_chain` holds (edges joined at a vertex), each with its
+// length, in the order of their first edge.
+template <typename In_chain>
+std::vector<std::pair<std::vector<Segmentation::Edge>, double> > edge_chains(const Mesh& m, const In_chain& in_chain)
 {
-  Mesh& m = s.mesh;
+  std::vector<std::pair<std::vector<Segmentation::Edge>, double> > chains;
   std::vector<char> seen(m.number_of_edges(), 0);
   for(Segmentation::Edge seed : m.edges())
   {
-    if(seen[seed] || !s.is_feature[seed] || s.is_patch_boundary(seed))
+    if(seen[seed] || !in_chain(seed))
       continue;
     std::vector<Segmentation::Edge> chain, stack{seed};
     seen[seed] = 1;
@@ -547,20 +544,148 @@ inline void drop_short_dangling_features(Segmentation& s, double min_length, dou
       length += std::sqrt(CGAL::squared_distance(m.point(m.vertex(e, 0)), m.point(m.vertex(e, 1))));
       for(int k = 0; k < 2; ++k)
         for(auto h : CGAL::halfedges_around_target(m.halfedge(m.vertex(e, k)), m))
-        {
-          const Segmentation::Edge next = m.edge(h);
-          if(!seen[next] && s.is_feature[next] && !s.is_patch_boundary(next))
+          if(!seen[m.edge(h)] && in_chain(m.edge(h)))
           {
-            seen[next] = 1;
-            stack.push_back(next);
+            seen[m.edge(h)] = 1;
+            stack.push_back(m.edge(h));
           }
-        }
     }
-    if(length < min_length
-       && std::none_of(chain.begin(), chain.end(), [&](Segmentation::Edge e) { return dihedral_turn(m, e) > kept_turn; }))
-      for(Segmentation::Edge e : chain)
-        s.is_feature[e] = false;
+    chains.emplace_back(std::move(chain), length);
   }
+  return chains;
+}
+
+// Feature chains inside a patch (the same patch on both sides) shorter than `min_length` in all
+// are no features: they separate nothing, and a slit shorter than the target edge length opens
+// so little in the plane that the mesher must split the edges that would join both of its sides
+// (see `mesh_planar_domain()`). Unless an edge of the chain turns by more than `kept_turn`
+// degrees: a crease that sharp is a detail of the shape, which the output would cut off (on a
+// scanned model the short chains are wrinkles that turn much less, and are dropped).
+inline void drop_short_dangling_features(Segmentation& s, double min_length, double kept_turn)
+{
+  const Mesh& m = s.mesh;
+  const auto dangling = [&](Segmentation::Edge e) { return bool(s.is_feature[e]) && !s.is_patch_boundary(e); };
+  for(const auto& chain : edge_chains(m, dangling))
+    if(chain.second < min_length
+       && std::none_of(chain.first.begin(), chain.first.end(), [&](Segmentation::Edge e) { return dihedral_turn(m, e) > kept_turn; }))
+      for(Segmentation::Edge e : chain.first)
+        s.is_feature[e] = false;
+}
+
+// The midpoints of the `crease` edges in cells of side `clearance`, to find the creases near a
+// point.
+class Crease_grid
+{
+public:
+  Crease_grid(const Mesh& m, const std::vector<char>& crease, double clearance) : m_(m), cell_(clearance)
+  {
+    for(Segmentation::Edge e : m.edges())
+      if(crease[e])
+        cells_[key(midpoint(e))].push_back(e);
+  }
+
+  Epick::Point_3 midpoint(Segmentation::Edge e) const { return CGAL::midpoint(m_.point(m_.vertex(e, 0)), m_.point(m_.vertex(e, 1))); }
+
+  // Whether a crease edge for which `is_other` holds, sharing no vertex with `e`, has its
+  // midpoint closer than the clearance to `e`'s.
+  template <typename Is_other>
+  bool has_other_crease_near(Segmentation::Edge e, const Is_other& is_other) const
+  {
+    const Epick::Point_3 p = midpoint(e);
+    const std::array<long, 3> c = key(p);
+    for(long dx = -1; dx <= 1; ++dx)
+      for(long dy = -1; dy <= 1; ++dy)
+        for(long dz = -1; dz <= 1; ++dz)
+        {
+          const auto found = cells_.find({{c[0] + dx, c[1] + dy, c[2] + dz}});
+          if(found != cells_.end())
+            for(Segmentation::Edge f : found->second)
+              if(is_other(f) && !shares_a_vertex(e, f) && CGAL::squared_distance(p, midpoint(f)) < cell_ * cell_)
+                return true;
+        }
+    return false;
+  }
+
+private:
+  std::array<long, 3> key(const Epick::Point_3& p) const
+  {
+    return {{long(std::floor(p.x() / cell_)), long(std::floor(p.y() / cell_)), long(std::floor(p.z() / cell_))}};
+  }
+  bool shares_a_vertex(Segmentation::Edge e, Segmentation::Edge f) const
+  {
+    for(int i = 0; i < 2; ++i)
+      for(int j = 0; j < 2; ++j)
+        if(m_.vertex(e, i) == m_.vertex(f, j))
+          return true;
+    return false;
+  }
+
+  const Mesh& m_;
+  double cell_;
+  std::map<std::array<long, 3>, std::vector<Segmentation::Edge> > cells_;
+};
+
+// Whether each end of `chain` (a vertex with one edge of the chain) is on a feature or a border
+// outside the chain; a closed chain has no end.
+inline bool ends_on_features(const Segmentation& s, const std::vector<Segmentation::Edge>& chain,
+                             const std::vector<std::size_t>& chain_of, std::size_t c)
+{
+  const Mesh& m = s.mesh;
+  for(Segmentation::Edge e : chain)
+    for(int k = 0; k < 2; ++k)
+    {
+      int in_chain = 0;
+      bool on_feature = false;
+      for(auto h : CGAL::halfedges_around_target(m.halfedge(m.vertex(e, k)), m))
+      {
+        const Segmentation::Edge f = m.edge(h);
+        if(chain_of[f] == c)
+          ++in_chain;
+        else if(s.is_feature[f] || m.is_border(f))
+          on_feature = true;
+      }
+      if(in_chain == 1 && !on_feature)
+        return false;
+    }
+  return true;
+}
+
+// Creases sharper than `angle` degrees but not features become features where they are the edges
+// of a CAD part: chains at least `min_length` long that run from features to features (or
+// borders, or close on themselves), at least 80% of whose edges have no other crease within
+// `clearance`. An output that does not follow such a crease (a chamfer's edges, typically 30 to
+// 60 degrees) cuts or bridges it, by up to a fifth of the target length. Short chains and chains
+// that end in the open (the folds and wrinkles of scans and of coarse smooth models, where a
+// feature's end would leave small angles) and creases close to parallel ones (the facets of a
+// coarsely tessellated fillet or of a blade's sliver strips, where features would leave strips
+// narrower than the target) stay inside their patches.
+inline void add_cad_creases(Segmentation& s, double angle, double min_length, double clearance)
+{
+  const Mesh& m = s.mesh;
+  std::vector<char> crease(m.number_of_edges(), 0);
+  for(Segmentation::Edge e : m.edges())
+    crease[e] = s.is_feature[e] || dihedral_turn(m, e) > angle;
+  const std::vector<std::pair<std::vector<Segmentation::Edge>, double> > chains
+    = edge_chains(m, [&](Segmentation::Edge e) { return crease[e] && !s.is_feature[e]; });
+  std::vector<std::size_t> chain_of(m.number_of_edges(), chains.size());
+  for(std::size_t c = 0; c < chains.size(); ++c)
+    for(Segmentation::Edge e : chains[c].first)
+      chain_of[e] = c;
+  const Crease_grid grid(m, crease, clearance);
+  std::vector<Segmentation::Edge> kept;
+  for(std::size_t c = 0; c < chains.size(); ++c)
+  {
+    if(chains[c].second < min_length || !ends_on_features(s, chains[c].first, chain_of, c))
+      continue;
+    const auto is_other = [&](Segmentation::Edge f) { return chain_of[f] != c; };
+    const std::size_t crowded = std::size_t(std::count_if(chains[c].first.begin(), chains[c].first.end(), [&](Segmentation::Edge e) {
+      return grid.has_other_crease_near(e, is_other);
+    }));
+    if(double(crowded) <= 0.2 * double(chains[c].first.size()))
+      kept.insert(kept.end(), chains[c].first.begin(), chains[c].first.end());
+  }
+  for(Segmentation::Edge e : kept)
+    s.is_feature[e] = true;
 }
 
 } // namespace segmentation
@@ -632,6 +757,11 @@ inline bool bisect_patch(Poly_annulus_segmentation& s, const std::vector<Poly_an
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{60}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{crease_angle}
+///     \cgalParamDescription{edges with a dihedral angle in degrees above this but not above `features_angle` are sharp too where they are the edges of a CAD part: chains at least 50 times `snap_distance` long (5 target edge lengths in `remesh_conformal()`) that run from sharp features to sharp features or borders, most of whose edges have no other such crease within 10 times `snap_distance` (one target length), as a chamfer's edges; not the short folds of a scan, nor the facets of a coarsely tessellated fillet (`Conformal_remeshing::parameters::crease_angle()`; 0 or at least `features_angle`: none). Not used with `edge_is_constrained_map`}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{40}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{face_patch_map}
 ///     \cgalParamDescription{user patches: a property map from faces to patch ids; their borders are cuts, kept as chains of output edges by `remesh_conformal()`}
 ///     \cgalParamType{a model of `ReadablePropertyMap` with `boost::graph_traits<TriangleMesh>::%face_descriptor` as key type and a value type convertible to `std::size_t`}
@@ -702,8 +832,11 @@ void segment_into_poly_annuli(const TriangleMesh& input, Poly_annulus_segmentati
   else
   {
     const double angle = choose_parameter(get_parameter(np, internal_np::features_angle), 60.);
+    const double crease = choose_parameter(get_parameter(np, internal_np::crease_angle), 40.);
     if(angle > 0.)
       CGAL::Polygon_mesh_processing::detect_sharp_edges(s.mesh, angle, s.is_feature);
+    if(angle > 0. && crease > 0. && crease < angle)
+      internal::segmentation::add_cad_creases(s, crease, 50. * snap, 10. * snap);
   }
 
   // --- user patches and planes ----------------------------------------------------------------
