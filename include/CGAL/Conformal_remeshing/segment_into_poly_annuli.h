@@ -607,9 +607,11 @@ public:
   }
 
 private:
+  // Cells far beyond any coordinate a mesh has are clamped rather than overflow.
   std::array<long, 3> key(const Epick::Point_3& p) const
   {
-    return {{long(std::floor(p.x() / cell_)), long(std::floor(p.y() / cell_)), long(std::floor(p.z() / cell_))}};
+    const auto cell = [&](double x) { return long((std::max)(-1e15, (std::min)(1e15, std::floor(x / cell_)))); };
+    return {{cell(p.x()), cell(p.y()), cell(p.z())}};
   }
   bool shares_a_vertex(Segmentation::Edge e, Segmentation::Edge f) const
   {
@@ -835,7 +837,7 @@ void segment_into_poly_annuli(const TriangleMesh& input, Poly_annulus_segmentati
     const double crease = choose_parameter(get_parameter(np, internal_np::crease_angle), 40.);
     if(angle > 0.)
       CGAL::Polygon_mesh_processing::detect_sharp_edges(s.mesh, angle, s.is_feature);
-    if(angle > 0. && crease > 0. && crease < angle)
+    if(angle > 0. && crease > 0. && crease < angle && snap > 0.)
       internal::segmentation::add_cad_creases(s, crease, 50. * snap, 10. * snap);
   }
 
