@@ -162,10 +162,7 @@ std::vector<double> largest_distance_per_face(const TriangleMesh& mesh, const Tr
 template <typename TriangleMesh>
 double median_edge_length(const TriangleMesh& mesh)
 {
-  const auto vpm = get(CGAL::vertex_point, mesh);
-  std::vector<double> lengths;
-  for(auto e : edges(mesh))
-    lengths.push_back(std::sqrt(CGAL::to_double(CGAL::squared_distance(get(vpm, source(e, mesh)), get(vpm, target(e, mesh))))));
+  std::vector<double> lengths = edge_lengths(mesh, get(CGAL::vertex_point, mesh));
   if(lengths.empty())
     return 0.;
   std::nth_element(lengths.begin(), lengths.begin() + lengths.size() / 2, lengths.end());

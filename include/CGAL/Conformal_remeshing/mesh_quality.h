@@ -188,6 +188,24 @@ Triangle_quality triangle_quality(const Point_3& p, const Point_3& q, const Poin
   return result;
 }
 
+namespace internal {
+
+/// The length of each edge of `mesh`, in the order of `edges(mesh)`.
+template <typename TriangleMesh, typename VertexPointMap>
+std::vector<double> edge_lengths(const TriangleMesh& mesh, const VertexPointMap& vpm)
+{
+  std::vector<double> lengths;
+  lengths.reserve(num_edges(mesh));
+  for(auto e : edges(mesh))
+  {
+    const auto h = halfedge(e, mesh);
+    lengths.push_back(std::sqrt(CGAL::to_double(CGAL::squared_distance(get(vpm, source(h, mesh)), get(vpm, target(h, mesh))))));
+  }
+  return lengths;
+}
+
+} // namespace internal
+
 /// \ingroup PkgConformalRemeshingRef
 /// Computes the quality measures of a triangle mesh.
 ///
@@ -264,14 +282,7 @@ Mesh_quality_report mesh_quality(const TriangleMesh& mesh,
     report.aspect_ratio = aspect_ratios.statistics();
   }
 
-  std::vector<double> lengths;
-  lengths.reserve(report.number_of_edges);
-  for(auto e : edges(mesh))
-  {
-    const auto h = halfedge(e, mesh);
-    lengths.push_back(std::sqrt(CGAL::to_double(CGAL::squared_distance(get(vpm, source(h, mesh)),
-                                                                      get(vpm, target(h, mesh))))));
-  }
+  std::vector<double> lengths = internal::edge_lengths(mesh, vpm);
   if(!lengths.empty())
   {
     double sum = 0.;
