@@ -2,8 +2,9 @@
 # Installs what the project needs from Debian's packages; only what is missing, so running it
 # again is quick and changes nothing. Works as root or through sudo.
 #
-#   scripts/install_dependencies.sh          to build the package, its tools and its Python module
-#                                            (pybind11, NumPy and the Python headers)
+#   scripts/install_dependencies.sh          to build the package, its tools (OpenMPI for
+#                                            remesh_conformal_mpi) and its Python module (pybind11,
+#                                            NumPy and the Python headers)
 #   scripts/install_dependencies.sh --tests  also what the test suite needs: GoogleTest, doxygen,
 #                                            pytest and CGAL's public test meshes (see fetch_cgal_data.sh)
 #   scripts/install_dependencies.sh --robustness
@@ -23,13 +24,13 @@ for arg in "$@"; do
     --tests) with_tests=1 ;;
     --robustness) with_robustness=1 ;;
     --benchmarks) with_benchmarks=1 ;;
-    -h|--help) sed -n '2,14p' "${BASH_SOURCE[0]}"; exit 0 ;;
+    -h|--help) sed -n '2,15p' "${BASH_SOURCE[0]}"; exit 0 ;;
     *) echo "install_dependencies.sh: unknown argument '$arg'" >&2; exit 2 ;;
   esac
 done
 
 packages=(cmake make g++ libcgal-dev libeigen3-dev libboost-dev libgmp-dev libmpfr-dev libtbb-dev
-          pybind11-dev python3-dev python3-numpy)
+          pybind11-dev python3-dev python3-numpy libopenmpi-dev openmpi-bin)
 if [ "$with_tests" -eq 1 ]; then
   packages+=(libgtest-dev doxygen python3-pytest)
 fi

@@ -2,18 +2,21 @@
 // that the peak memory measured is the run's own; and the list of the benchmark's runs.
 //
 //   paper_benchmark plan [--scale full|small] [--part table|scaling|all] [--models NAME,...]
-//                        [--methods conformal,isotropic]
-//   paper_benchmark run MESH OUT.json --method conformal|isotropic
+//                        [--methods conformal,isotropic,gmsh,meshlab]
+//   paper_benchmark run MESH OUT.json --method conformal|isotropic|gmsh|meshlab
 //                   (--target-output-vertices N | --target-edge-length L) [--name NAME]
 //                   [--mid-plane-cut] [--time-limit SECONDS] [--hausdorff-samples N] [--output OUT.off]
 //
 // plan prints one line per run: id, model, input vertices, method, output vertices the target
-// edge length is chosen for, and "cut" when the paper cuts the part by its mid-plane.
+// edge length is chosen for, and "cut" when the paper cuts the part by its mid-plane. Without
+// --methods it lists the runs of remesh_conformal() and isotropic_remeshing() only.
 //
-// run reads and checks MESH, then remeshes it with remesh_conformal() or with the peer (CGAL's
-// isotropic_remeshing() with sharp edges and borders kept, support/isotropic_peer.h) at one
-// target edge length: given, or the one whose equilateral triangles cover the surface with N
-// vertices. It records the wall seconds and the peak resident memory of every stage (the
+// run reads and checks MESH, then remeshes it with remesh_conformal() or with a peer (CGAL's
+// isotropic_remeshing() with sharp edges and borders kept, support/isotropic_peer.h; Gmsh or
+// MeshLab as a subprocess, support/external_peers.h) at one target edge length: given, or the one
+// whose equilateral triangles cover the surface with N vertices. The peak memory of a Gmsh or
+// MeshLab run is the larger of this process's and the largest subprocess's; a peer that is not
+// installed or fails is a failed run (exit code 1), one that runs out of time a time limit. It records the wall seconds and the peak resident memory of every stage (the
 // kernel's high-water mark, reset when a stage starts; remesh_conformal() says when its stages
 // start through its progress callback), the library's own report (per-patch stage times, Newton
 // iterations, flips), the process's peak memory (the largest of the stages'), the sizes, the
@@ -24,6 +27,7 @@
 // unreadable input, 3 time limit.
 
 #include "atomic_file.h"
+#include "external_peers.h"
 #include "isotropic_peer.h"
 #include "json_writer.h"
 #include "model_tool.h"
@@ -72,8 +76,8 @@ namespace {
 
 const char* usage =
   "usage: paper_benchmark plan [--scale full|small] [--part table|scaling|all] [--models NAME,...]\n"
-  "                            [--methods conformal,isotropic]\n"
-  "       paper_benchmark run MESH OUT.json --method conformal|isotropic\n"
+  "                            [--methods conformal,isotropic,gmsh,meshlab]\n"
+  "       paper_benchmark run MESH OUT.json --method conformal|isotropic|gmsh|meshlab\n"
   "                       (--target-output-vertices N | --target-edge-length L) [--name NAME]\n"
   "                       [--mid-plane-cut] [--time-limit SECONDS] [--hausdorff-samples N] [--output OUT.off]\n"
   "  --mid-plane-cut         cut by the plane z = middle of the bounding box first (the paper's brake)\n"
@@ -444,8 +448,9 @@ Run_options parse_run(int argc, char** argv)
     throw std::invalid_argument("run needs MESH and OUT.json");
   o.mesh = positional[0];
   o.json = positional[1];
-  if(o.method != "conformal" && o.method != "isotropic")
-    throw std::invalid_argument("--method must be conformal or isotropic");
+  const std::vector<std::string>& methods = bm::paper_benchmark_methods();
+  if(std::find(methods.begin(), methods.end(), o.method) == methods.end())
+    throw std::invalid_argument("--method must be conformal, isotropic, gmsh or meshlab");
   if((o.target_output_vertices > 0.) == (o.target_edge_length > 0.))
     throw std::invalid_argument("give one of --target-output-vertices and --target-edge-length");
   if(o.name.empty())
@@ -553,6 +558,24 @@ int run(int argc, char** argv)
         r.statistics = statistics;
       });
     }
+    else if(o.method == "gmsh" || o.method == "meshlab")
+    {
+      progress_line(o.method + " at target edge length " + std::to_string(h));
+      recorder.start_stage("remeshing");
+      // The subprocess ends before the watchdog would, so that its time-out is the one recorded.
+      const double timeout = std::max(1., 0.95 * o.time_limit - seconds_since(start));
+      bm::Peer_run<Mesh> peer = o.method == "gmsh" ? bm::run_gmsh_peer(input, h, timeout) : bm::run_meshlab_peer(input, h, timeout);
+      recorder.end_stage();
+      if(peer.status == bm::Peer_status::timed_out)
+      {
+        recorder.give_up("time_limit", o.method + " " + peer.reason + " (" + std::to_string(timeout) + " s)");
+        progress_line(o.method + " timed out");
+        return 3;
+      }
+      if(peer.status != bm::Peer_status::ok)
+        throw std::runtime_error(o.method + " " + bm::peer_status_name(peer.status) + ": " + peer.reason);
+      output = std::move(peer.mesh);
+    }
     else
     {
       progress_line("isotropic_remeshing at target edge length " + std::to_string(h));
@@ -564,7 +587,7 @@ int run(int argc, char** argv)
       recorder.end_stage();
     }
     method_seconds = seconds_since(method_start);
-    const double peak_mb_method = recorder.process_peak_megabytes();
+    const double peak_mb_method = std::max(recorder.process_peak_megabytes(), bm::largest_child_peak_megabytes());
     recorder.update([&](Record& r) {
       r.method_completed = true;
       r.method_seconds = method_seconds;
@@ -643,7 +666,8 @@ int plan(int argc, char** argv)
       part = value;
     else if(arg == "--models")
       models = "," + value + ",";
-    else if(arg == "--methods" && std::regex_match(value, std::regex("(conformal|isotropic)(,(conformal|isotropic))*")))
+    else if(arg == "--methods"
+            && std::regex_match(value, std::regex("(conformal|isotropic|gmsh|meshlab)(,(conformal|isotropic|gmsh|meshlab))*")))
       methods = "," + value + ",";
     else
     {
@@ -657,7 +681,8 @@ int plan(int argc, char** argv)
   for(const bm::Planned_run& r : bm::paper_benchmark_plan(scale))
   {
     const std::string model = bm::paper_model_info(r.model).name;
-    if((part != "all" && part != r.part) || !listed(models, model) || !listed(methods, r.method))
+    const bool method_listed = methods.empty() ? bm::is_default_paper_benchmark_method(r.method) : listed(methods, r.method);
+    if((part != "all" && part != r.part) || !listed(models, model) || !method_listed)
       continue;
     std::cout << r.id << " " << model << " " << r.input_vertices << " " << r.method << " " << r.output_vertices
               << (r.mid_plane_cut ? " cut" : "") << "\n";

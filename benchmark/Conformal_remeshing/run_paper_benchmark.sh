@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
-# The paper benchmark (issue #7): the paper's Table 1 and Fig. 10 reproduced on the generated
-# stand-ins of its five car parts, remesh_conformal() against CGAL's isotropic_remeshing() in the
-# same run, and the growth of every stage with the input size.
+# The paper benchmark: the paper's Table 1 and Fig. 10 reproduced on the generated
+# stand-ins of its five car parts, remesh_conformal() against CGAL's isotropic_remeshing() (and,
+# when asked, Gmsh and MeshLab) in the same run, and the growth of every stage with the input size.
 #
 #   bash benchmark/Conformal_remeshing/run_paper_benchmark.sh [--scale full|small]
-#        [--part table|scaling|all] [--models NAME,...] [--methods conformal,isotropic]
+#        [--part table|scaling|all] [--models NAME,...] [--methods conformal,isotropic,gmsh,meshlab]
 #        [--time-limit SECONDS] [--resume] [OUT_DIR]
 #
 #   --scale       full: Table 1's sizes (87k to 804k input vertices) and 10k to 1M for the growth
@@ -12,7 +12,9 @@
 #                 [full]
 #   --part        Table 1 runs, growth runs or both [all]
 #   --models      only these parts (generator names, e.g. suspension_arm,brake_disc)
-#   --methods     only these remeshers (conformal: ours, isotropic: the peer) [both]
+#   --methods     these remeshers (conformal: ours; isotropic: CGAL's isotropic_remeshing(); gmsh,
+#                 meshlab: the peers outside CGAL, installed by the script when listed)
+#                 [conformal,isotropic]
 #   --time-limit  seconds per run before it is stopped and recorded as such [3600 full, 900 small]
 #   --resume      keep the runs already recorded as finished in OUT_DIR
 #   OUT_DIR       where the results go [out/paper_benchmark_<scale>]
@@ -38,7 +40,7 @@ while [ $# -gt 0 ]; do
     --methods) [ $# -ge 2 ] || fail "--methods needs a value"; methods="$2"; shift 2 ;;
     --time-limit) [ $# -ge 2 ] || fail "--time-limit needs a value"; time_limit="$2"; shift 2 ;;
     --resume) resume=1; shift ;;
-    -h|--help) sed -n '2,26p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    -h|--help) sed -n '2,28p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; exit 0 ;;
     -*) fail "unknown option '$1' (see --help)" ;;
     *) [ -z "$out" ] || fail "unexpected argument '$1'"; out="$1"; shift ;;
   esac
@@ -52,7 +54,10 @@ build="${BUILD_DIR:-$root/build/benchmark}"
 cache="${MODEL_CACHE:-$root/.cache/paper_models}"
 
 # --- build (Release) --------------------------------------------------------------------------
-bash "$root/scripts/install_dependencies.sh"
+case ",$methods," in
+  *,gmsh,*|*,meshlab,*) bash "$root/scripts/install_dependencies.sh" --benchmarks ;;
+  *) bash "$root/scripts/install_dependencies.sh" ;;
+esac
 cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=OFF \
       -DCGAL_CONFORMAL_REMESHING_BUILD_EXAMPLES=OFF >/dev/null
 cmake --build "$build" --target generate_paper_model paper_benchmark paper_benchmark_summary \

@@ -1,7 +1,12 @@
-// Patch jobs: each patch meshed from one value that holds all it reads (patch_job.h), and the
-// meshing stage's reuse of the results of equal jobs.
+// Patch jobs: each patch meshed from one value that holds all it reads (patch_job.h), the
+// meshing stage's reuse of the results of equal jobs, and jobs and results as bytes for other
+// processes (patch_job_io.h).
 
 #include "stage_tests.h"
+
+#include <CGAL/Conformal_remeshing/internal/remeshing/patch_job_io.h>
+
+#include <sstream>
 
 namespace {
 
@@ -156,4 +161,111 @@ TEST(PatchJobs, JobsDifferWhereALocalRefinementReachesTheirPatch)
   RM::Patch_job uniform = plate.job(0), refined = plate.job(0);
   refined.size = first.restricted_to(plate.surface.patches[0]->patch);
   EXPECT_FALSE(RM::same_meshing_inputs(uniform, refined));
+}
+
+namespace {
+
+// The output of remesh_conformal() as OFF text with every digit of its coordinates.
+std::string off_text(const Mesh& m)
+{
+  std::ostringstream out;
+  out.precision(17);
+  CGAL::IO::write_OFF(out, m);
+  return out.str();
+}
+
+// A runner that passes every job and result through bytes, as the MPI tool does between
+// processes: each job with its surface the first time its patch is seen, without it after.
+struct Runner_through_bytes
+{
+  RM::Patch_surfaces surfaces; // the other process's copies
+  std::set<std::size_t> sent;
+  std::size_t jobs = 0, jobs_without_surface = 0, bytes = 0;
+
+  void operator()(const std::vector<std::size_t>& to_run, const std::vector<RM::Patch_job>& all,
+                  std::vector<RM::Remeshed_patch>& remeshed, std::vector<std::string>& failures)
+  {
+    for(std::size_t p : to_run)
+    {
+      const bool with_surface = sent.insert(p).second;
+      const std::string job_bytes = RM::write_patch_job(all[p], with_surface);
+      bytes += job_bytes.size();
+      ++jobs;
+      jobs_without_surface += !with_surface;
+      const RM::Patch_job job = RM::read_patch_job(job_bytes.data(), job_bytes.size(), surfaces);
+      std::string failure;
+      RM::Remeshed_patch result;
+      try
+      {
+        result = RM::mesh_patch(job);
+      }
+      catch(const CR::Error& e)
+      {
+        failure = e.what();
+      }
+      const std::string result_bytes = RM::write_patch_result(job.patch, result, failure);
+      const std::size_t patch = RM::read_patch_result(result_bytes.data(), result_bytes.size(), remeshed[p], failures[p]);
+      EXPECT_EQ(patch, p);
+    }
+  }
+};
+
+} // namespace
+
+TEST(PatchJobs, AJobReadBackFromItsBytesGivesTheSameMesh)
+{
+  const Plate_patches plate;
+  RM::Patch_surfaces surfaces;
+  for(std::size_t p = 0; p < plate.surface.patches.size(); ++p)
+  {
+    const RM::Patch_job job = plate.job(p);
+    const std::string bytes = RM::write_patch_job(job, true);
+    const RM::Patch_job read = RM::read_patch_job(bytes.data(), bytes.size(), surfaces);
+    EXPECT_EQ(read.patch, p);
+    EXPECT_TRUE(RM::same_meshing_inputs(read, RM::Patch_job(read))); // a usable job
+    EXPECT_EQ(RM::write_patch_job(read, true), bytes);                // nothing lost on the way
+    expect_same_mesh(RM::mesh_patch(read), RM::mesh_patch(job));
+    // Without its surface, the job takes the one the reader has.
+    const std::string light = RM::write_patch_job(job, false);
+    EXPECT_LT(light.size(), bytes.size() / 2);
+    EXPECT_EQ(RM::read_patch_job(light.data(), light.size(), surfaces).surface, surfaces.at(p));
+  }
+}
+
+TEST(PatchJobs, BrokenJobBytesAreRefusedWithAnError)
+{
+  const Plate_patches plate;
+  const std::string bytes = RM::write_patch_job(plate.job(0), true);
+  RM::Patch_surfaces surfaces;
+  for(std::size_t size : {std::size_t(0), std::size_t(5), bytes.size() / 3, bytes.size() - 1})
+    EXPECT_THROW(RM::read_patch_job(bytes.data(), size, surfaces), CR::Error) << size;
+  const std::string longer = bytes + "x";
+  EXPECT_THROW(RM::read_patch_job(longer.data(), longer.size(), surfaces), CR::Error);
+  // A job without its surface, sent to a reader that never had it.
+  const std::string light = RM::write_patch_job(plate.job(1), false);
+  RM::Patch_surfaces none;
+  test_support::expect_error([&] { RM::read_patch_job(light.data(), light.size(), none); }, CR::Error_code::INVALID_INPUT,
+                             {"comes without its surface"});
+  // A user sizing field is a function: it cannot cross processes.
+  RM::Patch_job with_field = plate.job(0);
+  with_field.size = RM::Patch_size_field(plate.sizing->target(), 0.5, [](const K::Point_3&) { return 1.; },
+                                         RM::Local_refinement(), {});
+  test_support::expect_error([&] { RM::write_patch_job(with_field, true); }, CR::Error_code::INVALID_INPUT, {"user sizing field"});
+}
+
+TEST(PatchJobs, RemeshingWithJobsRunThroughBytesGivesTheSameOutput)
+{
+  // The MPI tool's contract: the output does not depend on where the jobs run.
+  Mesh plate, here, through_bytes;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(std::string(CONFORMAL_REMESHING_EXAMPLE_DATA) + "/perforated_plate.off", plate));
+  CR::remesh_conformal<CGAL::Sequential_tag>(plate, here);
+  Runner_through_bytes runner;
+  const RM::Patch_job_runner run = [&runner](const std::vector<std::size_t>& to_run, const std::vector<RM::Patch_job>& jobs,
+                                             std::vector<RM::Remeshed_patch>& remeshed, std::vector<std::string>& failures) {
+    runner(to_run, jobs, remeshed, failures);
+  };
+  CR::remesh_conformal<CGAL::Sequential_tag>(plate, through_bytes, CR::parameters::patch_job_runner(run));
+  EXPECT_GE(runner.jobs, 10u); // one per patch at least
+  EXPECT_GT(here.number_of_vertices(), 1000u);
+  EXPECT_EQ(off_text(through_bytes), off_text(here));
 }

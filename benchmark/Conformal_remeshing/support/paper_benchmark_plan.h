@@ -2,8 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The runs of the paper benchmark (run_paper_benchmark.sh): Table 1's five parts remeshed by
-// remesh_conformal() and by the peer, and one part family at five sizes for the growth of every
-// stage. One list, read by the script (what to generate and run) and by the summary (what to
+// remesh_conformal() and by each peer (CGAL's isotropic_remeshing(), Gmsh, MeshLab), and one part
+// family at five sizes for the growth of every stage. One list, read by the script (what to generate and run) and by the summary (what to
 // expect), so that the two cannot disagree.
 
 #ifndef CGAL_CONFORMAL_REMESHING_BENCHMARKS_PAPER_BENCHMARK_PLAN_H
@@ -45,10 +45,24 @@ struct Planned_run
   std::size_t input_vertices;
   /// the output size the target edge length is chosen for (Table 1's ratio of output to input)
   std::size_t output_vertices;
-  std::string method; ///< "conformal" (remesh_conformal) or "isotropic" (the peer)
+  /// "conformal" (remesh_conformal), or a peer: "isotropic" (isotropic_remeshing), "gmsh", "meshlab"
+  std::string method;
   bool mid_plane_cut;
   const Paper_table_1_row* row; ///< the Table 1 row of a "table" run, else null
 };
+
+/// The remeshers of Table 1's runs; the plan lists the first two unless asked for the others, which
+/// need programs outside CGAL (`scripts/install_dependencies.sh --benchmarks`).
+inline const std::vector<std::string>& paper_benchmark_methods()
+{
+  static const std::vector<std::string> methods{"conformal", "isotropic", "gmsh", "meshlab"};
+  return methods;
+}
+
+inline bool is_default_paper_benchmark_method(const std::string& method)
+{
+  return method == "conformal" || method == "isotropic";
+}
 
 /// The family whose growth is measured, and the sizes.
 constexpr Paper_model scaling_model = Paper_model::suspension_arm;
@@ -68,7 +82,7 @@ inline std::vector<Planned_run> paper_benchmark_plan(Benchmark_scale scale)
   const double factor = scale == Benchmark_scale::full ? 1. : 0.1;
   std::vector<Planned_run> runs;
   for(const Paper_table_1_row& row : paper_table_1())
-    for(const char* method : {"conformal", "isotropic"})
+    for(const std::string& method : paper_benchmark_methods())
     {
       const std::string name = paper_model_info(row.model).name;
       runs.push_back(Planned_run{"table_" + name + "_" + method, "table", row.model,

@@ -3,7 +3,8 @@
 //
 // Peak memory of the running process, for the benchmarks that run each case in its own process:
 // the peak of the whole process (getrusage) and the peak of one stage (Linux's resettable
-// high-water mark of the resident set, /proc/self/clear_refs and VmHWM).
+// high-water mark of the resident set, /proc/self/clear_refs and VmHWM); and the peak of the
+// largest subprocess, for the peers run as programs.
 
 #ifndef CGAL_CONFORMAL_REMESHING_BENCHMARKS_PROCESS_MEMORY_H
 #define CGAL_CONFORMAL_REMESHING_BENCHMARKS_PROCESS_MEMORY_H
@@ -25,6 +26,16 @@ inline double peak_resident_megabytes()
   if(getrusage(RUSAGE_SELF, &usage) != 0)
     return -1.;
   return double(usage.ru_maxrss) / 1024.; // Linux: kilobytes
+}
+
+/// The peak resident memory of the largest subprocess that has ended and been waited for (its
+/// own subprocesses included), in MB; 0 when there was none.
+inline double largest_child_peak_megabytes()
+{
+  struct rusage usage;
+  if(getrusage(RUSAGE_CHILDREN, &usage) != 0)
+    return -1.;
+  return double(usage.ru_maxrss) / 1024.;
 }
 
 /// Reads a "Name:   N kB" line of /proc/self/status, in MB; -1 when absent (not Linux).

@@ -83,6 +83,10 @@ void read_face_graph(const TriangleMesh& tm, const NamedParameters& np,
 }
 
 } // namespace ricci_flow
+
+namespace remeshing {
+struct Patch_job_serialization; // writes a triangulation as bytes (remeshing/patch_job_io.h)
+}
 } // namespace internal
 
 /// \ingroup PkgConformalRemeshingRef
@@ -965,6 +969,8 @@ private:
   std::vector<int> timeline_;                   // event -> flip index, or -1 - split index
   std::vector<std::vector<int>> face_events_;   // per face, the events that touched it, in order
   bool record_history_ = true;
+
+  friend struct internal::remeshing::Patch_job_serialization;
 };
 
 } // namespace Conformal_remeshing

@@ -84,6 +84,10 @@ CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(progress)                    // void(co
 // the place on the input surface of every output vertex (an output parameter takes
 // `std::ref(vector)`).
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(vertex_locations)
+// `patch_job_runner(f)`: `f`, an `internal::remeshing::Patch_job_runner`, runs the patch jobs of
+// the meshing stage instead of this process's threads (the MPI tool remesh_conformal_mpi hands
+// them to other processes); the output is the same wherever the jobs run.
+CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(patch_job_runner)
 // Output of `remesh_conformal()`: `Remeshing_statistics`, the timings and counters of its stages
 // (`std::ref(statistics)`).
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(statistics)

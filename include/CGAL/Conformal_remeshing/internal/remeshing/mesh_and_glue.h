@@ -113,7 +113,8 @@ Glued_output<TriangleMesh> mesh_and_glue(const Flattened_surface& surface, const
     const Sizing sizing(surface.segmentation, h, options.sizing_field, options.maximum_chord_error, near_crossings, proximity.gap);
     if(refinement == 0)
       report.gap_bounded_vertices = sizing.gap_bounded_vertices();
-    meshed = mesh_patches_on_shared_samples<ConcurrencyTag>(surface, sizing, options.corner_angle, meshing, time_limit, progress,
+    meshed = mesh_patches_on_shared_samples<ConcurrencyTag>(surface, sizing, options.corner_angle, meshing,
+                                                            options.patch_job_runner, time_limit, progress,
                                                             report, refinement == 0 ? nullptr : &meshed, crossing_patches);
     statistics.seconds_meshing_stage += seconds_since(start);
     add_meshing_statistics(meshed, statistics);

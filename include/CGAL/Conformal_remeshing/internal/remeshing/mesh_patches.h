@@ -47,28 +47,40 @@ struct Meshed_patches
   std::size_t jobs_run = 0, jobs_kept = 0;
 };
 
-/// Runs the jobs `to_run` of `jobs` into `remeshed`, in parallel. The Lloyd iterations, which
-/// may take longer than the rest of a patch's meshing, stop at the time limit too.
+/// Runs the jobs `to_run` of `jobs` into `remeshed`, in parallel, or by `runner` when it is set.
+/// The Lloyd iterations, which may take longer than the rest of a patch's meshing, stop at the
+/// time limit too.
 /// \throws Error with `Error_code::NOT_AN_EMBEDDING` naming the first patch that failed.
 template <typename ConcurrencyTag>
 void run_patch_jobs(const std::vector<std::size_t>& to_run, std::vector<Patch_job>& jobs, const Time_limit& time_limit,
-                    std::vector<Remeshed_patch>& remeshed)
+                    const Patch_job_runner& runner, std::vector<Remeshed_patch>& remeshed)
 {
   std::vector<std::string> failures(jobs.size());
-  for_each_index<ConcurrencyTag>(to_run.size(), [&](std::size_t i) {
-    Patch_job& job = jobs[to_run[i]];
-    try
-    {
-      time_limit.check("while meshing the patches");
-      if(time_limit.is_limited())
-        job.meshing.smoothing.lloyd_seconds = (std::max)(time_limit.remaining(), 1e-6); // 0 would be none
-      remeshed[job.patch] = mesh_patch(job);
-    }
-    catch(const Error& e)
-    {
-      failures[job.patch] = e.what();
-    }
-  });
+  const auto limit_lloyd = [&time_limit](Patch_job& job) {
+    if(time_limit.is_limited())
+      job.meshing.smoothing.lloyd_seconds = (std::max)(time_limit.remaining(), 1e-6); // 0 would be none
+  };
+  if(runner)
+  {
+    time_limit.check("while meshing the patches");
+    for(std::size_t p : to_run)
+      limit_lloyd(jobs[p]);
+    runner(to_run, jobs, remeshed, failures);
+  }
+  else
+    for_each_index<ConcurrencyTag>(to_run.size(), [&](std::size_t i) {
+      Patch_job& job = jobs[to_run[i]];
+      try
+      {
+        time_limit.check("while meshing the patches");
+        limit_lloyd(job);
+        remeshed[job.patch] = mesh_patch(job);
+      }
+      catch(const Error& e)
+      {
+        failures[job.patch] = e.what();
+      }
+    });
   time_limit.check("while meshing the patches");
   for(std::size_t p = 0; p < jobs.size(); ++p)
     if(!failures[p].empty())
@@ -185,12 +197,15 @@ inline std::vector<std::size_t> jobs_on_new_samples(const Flattened_surface& sur
 /// `max_diagonal_rounds` rounds: splitting adds no edge between samples, so this ends unless
 /// smoothing brings new ones.
 ///
+/// The jobs run in this process's threads, or by `runner` when it is set.
+///
 /// With `earlier`, the stage's result for the same surface with other sizes, the patches not in
 /// `to_run_again` whose boundary is unchanged keep their earlier meshes, and each curve starts as
 /// densely as it ended there.
 template <typename ConcurrencyTag, typename Progress>
 Meshed_patches mesh_patches_on_shared_samples(const Flattened_surface& surface, const Sizing& sizing, double corner_angle,
-                                              const Patch_meshing& meshing, const Time_limit& time_limit, const Progress& progress,
+                                              const Patch_meshing& meshing, const Patch_job_runner& runner,
+                                              const Time_limit& time_limit, const Progress& progress,
                                               Remeshing_report& report, const Meshed_patches* earlier = nullptr,
                                               const std::set<std::size_t>& to_run_again = {})
 {
@@ -224,7 +239,7 @@ Meshed_patches mesh_patches_on_shared_samples(const Flattened_surface& surface, 
       result.jobs_kept = before.jobs_kept + (n - to_run.size());
       diagonals_to_split.assign(n, {});
     }
-    run_patch_jobs<ConcurrencyTag>(to_run, result.jobs, time_limit, result.remeshed);
+    run_patch_jobs<ConcurrencyTag>(to_run, result.jobs, time_limit, runner, result.remeshed);
     result.jobs_run += to_run.size();
     const std::set<std::size_t> curves = curves_to_sample_again(result, result.halvings);
     resample = !curves.empty();

@@ -19,9 +19,11 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <functional>
 #include <map>
 #include <memory>
 #include <set>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -75,6 +77,15 @@ struct Patch_job
   Patch_meshing meshing;
   Sample_pairs diagonals_to_split; ///< shared sample indices, smaller first
 };
+
+struct Remeshed_patch;
+
+/// Runs the jobs `to_run` of `jobs` elsewhere than in this process's threads (the MPI tool hands
+/// them to other processes, patch_job_io.h): sets `remeshed[p]` for the job of patch `p`, or
+/// `failures[p]` to the message of the error it ended with. Empty: the jobs run here.
+typedef std::function<void(const std::vector<std::size_t>& to_run, const std::vector<Patch_job>& jobs,
+                           std::vector<Remeshed_patch>& remeshed, std::vector<std::string>& failures)>
+  Patch_job_runner;
 
 /// For each shared sample, the samples it shares a chord with.
 inline std::vector<std::vector<std::size_t> > chord_neighbours(const Curve_samples& samples)

@@ -10,6 +10,7 @@
 #include <CGAL/Conformal_remeshing/Error.h>
 #include <CGAL/Conformal_remeshing/parameters.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/frontal_insertion.h>
+#include <CGAL/Conformal_remeshing/internal/remeshing/patch_job.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/planar_mesher.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/sizing.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/tuning.h>
@@ -39,6 +40,8 @@ struct Remeshing_options
   Planar_smoothing smoothing;
   /// ...and the smoothing of the fallback by Delaunay refinement alone
   Planar_smoothing refinement_smoothing;
+  /// where the patch jobs run: empty, in this process's threads
+  Patch_job_runner patch_job_runner;
 };
 
 /// The options of `remesh_conformal(input, output, np)`.
@@ -61,6 +64,7 @@ Remeshing_options remeshing_options(const TriangleMesh& input, const NamedParame
   o.sizing_field = choose_parameter(get_parameter(np, internal_np::sizing_field), Sizing::Field());
   o.optimization_rounds = choose_parameter(get_parameter(np, internal_np::optimization_rounds), o.optimization_rounds);
   o.features_fallback = choose_parameter(get_parameter(np, internal_np::features_fallback), o.features_fallback);
+  o.patch_job_runner = choose_parameter(get_parameter(np, internal_np::patch_job_runner), Patch_job_runner());
   const bool frontal_on = choose_parameter(get_parameter(np, internal_np::frontal_insertion), true);
   const int lloyd_iterations = choose_parameter(get_parameter(np, internal_np::lloyd_iterations), 0);
   // Frontal insertion's rows need no Laplacian pass; the refinement alone gets one.

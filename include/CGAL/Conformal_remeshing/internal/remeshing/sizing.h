@@ -104,6 +104,8 @@ inline double field_size(const std::function<double(const Epick::Point_3&)>& fie
   return field ? (std::min)(field(p), local) : local;
 }
 
+struct Patch_job_serialization;
+
 /// The size field of `Sizing` on one patch, as a value of its own: the sizes at the corners of
 /// each patch face, the user's field and the local refinements that reach the patch. A patch job
 /// carries it (see patch_job.h) instead of the segmentation it was computed on. Two fields of the
@@ -165,6 +167,8 @@ private:
   Field field_;
   Local_refinement refinement_;
   std::vector<std::array<Corner, 3> > face_corners_; // empty when uniform
+
+  friend struct Patch_job_serialization; // writes the field as bytes (patch_job_io.h)
 };
 
 /// The size at a surface point: the smallest of the uniform target, the user's field at the

@@ -1,0 +1,494 @@
+// The command-line tool remesh_conformal as a function (`remesh_conformal_main()`), shared by
+// remesh_conformal.cpp, whose comment gives its synopsis, and the MPI tool remesh_conformal_mpi.cpp,
+// which differs only in where the patch jobs run.
+
+#ifndef CONFORMAL_REMESHING_TOOLS_REMESH_CONFORMAL_TOOL_H
+#define CONFORMAL_REMESHING_TOOLS_REMESH_CONFORMAL_TOOL_H
+
+#include "atomic_file.h"
+#include "deviation_map.h"
+#include "flattening_pictures.h"
+#include "quality_plot_svg.h"
+#include "report_json.h"
+
+#include <CGAL/Conformal_remeshing/IO/read_mesh.h>
+#include <CGAL/Conformal_remeshing/flatten_poly_annuli.h>
+#include <CGAL/Conformal_remeshing/mesh_quality.h>
+#include <CGAL/remesh_conformal.h>
+#include <CGAL/Conformal_remeshing/internal/remeshing/patch_job.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <algorithm>
+#include <functional>
+#include <chrono>
+#include <cmath>
+#include <fstream>
+#include <iostream>
+#include <limits>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace Conformal_remeshing_tools {
+namespace remesh_conformal_tool {
+
+namespace CR = CGAL::Conformal_remeshing;
+namespace tools = Conformal_remeshing_tools;
+typedef CGAL::Epick K;
+typedef CGAL::Surface_mesh<K::Point_3> Mesh;
+
+inline const char* const usage =
+  "usage: remesh_conformal IN OUT [--target-edge-length L | --relative-edge-length R] [--min-angle DEG]\n"
+  "                        [--features-angle DEG] [--crease-angle DEG] [--patches FILE] [--cut-plane a,b,c,d]...\n"
+  "                        [--save-patches DIR] [--sequential] [--report FILE.json] [--plots DIR] [--quiet]\n"
+  "                        [--time-limit SECONDS] [--optimization-rounds N] [--lloyd-iterations N] [--chord-error E]\n"
+  "                        [--no-frontal] [--no-repair] [--deviation-map PREFIX]\n"
+  "  IN, OUT                 mesh files (.off .obj .ply .stl); OUT is written atomically\n"
+  "  --target-edge-length L  target edge length in the input's units\n"
+  "  --relative-edge-length R  target edge length as a fraction of the bounding-box diagonal (default 0.01)\n"
+  "  --min-angle DEG         smallest angle the optimization on the surface keeps (default 28;\n"
+  "                          the planar Delaunay refinement uses at most 20.7)\n"
+  "  --features-angle DEG    edges with a dihedral angle above DEG are sharp features (default 60, and none if a\n"
+  "                          patch cannot be flattened with them; given, they are kept or the tool fails; 0: none)\n"
+  "  --crease-angle DEG      creases above DEG (and not above --features-angle) are features too where they are a CAD\n"
+  "                          part's edges: chains at least 5 target lengths long with no parallel crease within one\n"
+  "                          (default 40; 0: none)\n"
+  "  --patches FILE          user patches: one integer patch id per face of IN, in face order\n"
+  "  --cut-plane a,b,c,d     cut the surface by the plane ax+by+cz+d=0 first (repeatable)\n"
+  "  --save-patches DIR      DIR/patch_N.off and DIR/patch_N_flattening.svg for every patch (DIR is created)\n"
+  "  --sequential            one patch at a time (default: in parallel when built with TBB)\n"
+  "  --report FILE.json      stage times, segmentation and flattening, quality of input and output, fidelity\n"
+  "  --plots DIR             DIR/quality.svg: angle and skewness histograms, input and output (DIR is created)\n"
+  "  --deviation-map PREFIX  PREFIX_output.{ply,png} and PREFIX_input.{ply,png}: each face coloured by its largest\n"
+  "                          distance to the other surface (blue 0 to red at a quarter of the target length), and\n"
+  "                          the histograms of those distances in the output and in --report\n"
+  "  --quiet                 no progress messages\n"
+  "  --time-limit SECONDS    give up (exit code 3, no output written) if reading and remeshing take longer\n"
+  "  --optimization-rounds N rounds of flips and smoothing judged on the surface after the refinement (default 5, 0: none)\n"
+  "  --lloyd-iterations N    at most N iterations of CGAL's Lloyd smoothing in the plane before them (default 0: none)\n"
+  "  --no-frontal            place the planar points by Delaunay refinement alone, with one Laplacian pass (by\n"
+  "                          default frontal insertion places them in rows of nearly equilateral triangles first)\n"
+  "  --chord-error E         shorter edges where the surface bends, so that chords deviate from it by at most E\n"
+  "                          (input units; down to 1/16 of the target length; default 0: uniform)\n"
+  "  --no-repair             refuse polygons, inconsistent orientation, isolated vertices, cracks, non-manifold\n"
+  "                          edges and vertices and degenerate faces (by default polygons are triangulated, faces\n"
+  "                          oriented, isolated vertices removed, borders along the same points stitched,\n"
+  "                          non-manifold edges and vertices cut apart and zero-area faces removed first)\n"
+  "Any orientable triangle mesh: closed or open, any genus, several components; vertices at the same point stay\n"
+  "distinct.\n"
+  "exit code: 0 success, 1 the input cannot be remeshed, 2 the tool could not run, 3 time limit exceeded\n";
+
+struct Options
+{
+  std::string input, output, report, plots, patches, save_patches, deviation_map;
+  double target = 0., relative = 0.01, min_angle = 28., features_angle = 60., crease_angle = 40.;
+  double time_limit = std::numeric_limits<double>::infinity();
+  double chord_error = 0.;
+  int optimization_rounds = 5, lloyd_iterations = 0;
+  std::vector<K::Plane_3> planes;
+  bool quiet = false, sequential = false, repair = true, frontal = true;
+  bool features_angle_given = false; // then no fallback without features (CR::parameters::features_fallback)
+};
+
+// A message for standard error: the library's errors name their function, which is the tool's
+// name too, and are not prefixed twice.
+inline std::string tool_message(const std::string& what)
+{
+  const std::string prefix = "remesh_conformal: ";
+  return what.compare(0, prefix.size(), prefix) == 0 ? what : prefix + what;
+}
+
+inline bool parse_plane(const std::string& text, std::vector<K::Plane_3>& planes)
+{
+  std::istringstream in(text);
+  double c[4];
+  char comma = ',';
+  for(int i = 0; i < 4; ++i)
+    if(!(in >> c[i]) || (i < 3 && (!(in >> comma) || comma != ',')))
+      return false;
+  if(!in.eof() && in.peek() != EOF)
+    return false;
+  if(c[0] == 0. && c[1] == 0. && c[2] == 0.)
+    return false;
+  planes.emplace_back(c[0], c[1], c[2], c[3]);
+  return true;
+}
+
+inline bool parse(int argc, char** argv, Options& o)
+{
+  for(int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    auto number = [&](double& target) {
+      if(i + 1 >= argc)
+        return false;
+      try
+      {
+        std::size_t used = 0;
+        target = std::stod(argv[++i], &used);
+        return used == std::string(argv[i]).size();
+      }
+      catch(const std::exception&)
+      {
+        return false;
+      }
+    };
+    auto count = [&](int& target) { // a whole number from 0 to 100
+      double value = 0.;
+      if(!number(value) || !(value >= 0. && value <= 100. && value == std::floor(value)))
+        return false;
+      target = int(value);
+      return true;
+    };
+    bool ok = true;
+    if(arg == "--target-edge-length")
+      ok = number(o.target) && o.target > 0.;
+    else if(arg == "--relative-edge-length")
+      ok = number(o.relative) && o.relative > 0.;
+    else if(arg == "--min-angle")
+      ok = number(o.min_angle);
+    else if(arg == "--features-angle")
+      ok = o.features_angle_given = number(o.features_angle);
+    else if(arg == "--crease-angle")
+      ok = number(o.crease_angle) && o.crease_angle >= 0.;
+    else if(arg == "--patches" && i + 1 < argc)
+      o.patches = argv[++i];
+    else if(arg == "--cut-plane" && i + 1 < argc)
+      ok = parse_plane(argv[++i], o.planes);
+    else if(arg == "--save-patches" && i + 1 < argc)
+      o.save_patches = argv[++i];
+    else if(arg == "--sequential")
+      o.sequential = true;
+    else if(arg == "--report" && i + 1 < argc)
+      o.report = argv[++i];
+    else if(arg == "--plots" && i + 1 < argc)
+      o.plots = argv[++i];
+    else if(arg == "--deviation-map" && i + 1 < argc)
+      o.deviation_map = argv[++i];
+    else if(arg == "--quiet")
+      o.quiet = true;
+    else if(arg == "--no-repair")
+      o.repair = false;
+    else if(arg == "--no-frontal")
+      o.frontal = false;
+    else if(arg == "--time-limit")
+      ok = number(o.time_limit) && o.time_limit > 0.;
+    else if(arg == "--optimization-rounds")
+      ok = count(o.optimization_rounds);
+    else if(arg == "--lloyd-iterations")
+      ok = count(o.lloyd_iterations);
+    else if(arg == "--chord-error")
+      ok = number(o.chord_error) && o.chord_error >= 0.;
+    else if(!arg.empty() && arg[0] != '-' && o.input.empty())
+      o.input = arg;
+    else if(!arg.empty() && arg[0] != '-' && o.output.empty())
+      o.output = arg;
+    else
+      ok = false;
+    if(!ok)
+    {
+      std::cerr << "remesh_conformal: bad argument '" << arg << "'\n" << usage;
+      return false;
+    }
+  }
+  if(o.input.empty() || o.output.empty())
+  {
+    std::cerr << "remesh_conformal: needs IN and OUT\n" << usage;
+    return false;
+  }
+  return true;
+}
+
+} // namespace remesh_conformal_tool
+
+/// The tool remesh_conformal on the command line `argc`, `argv`; returns its exit code. The
+/// patch jobs run in this process's threads, or by `runner` when it is set (remesh_conformal_mpi).
+inline int remesh_conformal_main(int argc, char** argv,
+                                 const CGAL::Conformal_remeshing::internal::remeshing::Patch_job_runner& runner = {})
+{
+  using namespace remesh_conformal_tool;
+  const auto start = std::chrono::steady_clock::now();
+  for(int i = 1; i < argc; ++i)
+    if(std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h")
+    {
+      std::cout << usage;
+      return 0;
+    }
+  Options o;
+  if(!parse(argc, argv, o))
+    return 2;
+  auto progress = [&](const std::string& message) {
+    if(!o.quiet)
+      std::cerr << "remesh_conformal: " << message << std::endl;
+  };
+  // --time-limit counts from the start; the library stops with TIME_LIMIT_EXCEEDED past it.
+  auto remaining_time = [&]() {
+    return (std::max)(0., o.time_limit - std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+  };
+  auto out_of_time = [&](const std::string& why) {
+    std::cerr << "remesh_conformal: the time limit of " << o.time_limit << " s (--time-limit) was exceeded; no output written ("
+              << why << ")\n";
+    return 3;
+  };
+
+  // Output directories exist before the long work, or the run stops here.
+  try
+  {
+    for(const std::string& directory : {o.save_patches, o.plots})
+      if(!directory.empty())
+        tools::prepare_output_directory(directory);
+  }
+  catch(const std::exception& e)
+  {
+    std::cerr << tool_message(e.what()) << "\n";
+    return 2;
+  }
+
+  Mesh input;
+  CR::Input_repair_report repaired;
+  try
+  {
+    progress("reading " + o.input);
+    const CR::Mesh_check_report checks
+      = CR::read_and_check_mesh(o.input, input, o.repair ? CR::Input_repairs::all() : CR::Input_repairs(), repaired);
+    if(repaired.any())
+      progress("repaired the input: " + repaired.summary());
+    // Refused here, before any work, as the library would refuse it.
+    const CR::Mesh_check_report left = checks.refused_by_remeshing(o.repair);
+    if(!left.is_valid())
+    {
+      std::cerr << "remesh_conformal: invalid input '" << o.input << "': " << left.summary()
+                << (repaired.any() ? " (after the repairs: " + repaired.summary() + ")" : std::string()) << "\n";
+      return 1;
+    }
+  }
+  catch(const std::exception& e)
+  {
+    std::cerr << tool_message(e.what()) << "\n";
+    return 2;
+  }
+  if(!(remaining_time() > 0.))
+    return out_of_time("stopped after reading the input");
+
+  // User patches: one id per face, all read before anything runs.
+  auto patch_of = input.add_property_map<Mesh::Face_index, std::size_t>("f:user_patch", 0).first;
+  if(!o.patches.empty())
+  {
+    std::ifstream in(o.patches);
+    std::vector<long> ids;
+    long id = 0;
+    while(in >> id)
+      ids.push_back(id);
+    // One id per face of the file: a triangulated polygon's triangles take its id.
+    if(!in.eof() || ids.size() != repaired.file_faces
+       || std::any_of(ids.begin(), ids.end(), [](long i) { return i < 0; }))
+    {
+      std::cerr << "remesh_conformal: cannot read '" << o.patches << "': expected " << repaired.file_faces
+                << " non-negative integer patch ids (one per face), found " << ids.size()
+                << (in.eof() ? "" : " before a non-integer") << "\n";
+      return 2;
+    }
+    for(Mesh::Face_index f : input.faces())
+      patch_of[f] = std::size_t(ids[repaired.file_face[f.idx()]]);
+  }
+  const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(input);
+  const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin())
+                                    + CGAL::square(box.zmax() - box.zmin()));
+  const double target = o.target > 0. ? o.target : o.relative * diagonal;
+  const auto np = CR::parameters::frontal_insertion(o.frontal, CR::parameters::maximum_chord_error(o.chord_error, CR::parameters::optimization_rounds(o.optimization_rounds, CR::parameters::lloyd_iterations(o.lloyd_iterations, CR::parameters::target_edge_length(
+    target, CR::parameters::minimum_angle(
+              o.min_angle, CR::parameters::crease_angle(o.crease_angle, CR::parameters::features_angle(
+                             o.features_angle, CR::parameters::cut_planes(
+                                                 o.planes, CR::parameters::features_fallback(
+                                                             !o.features_angle_given, CR::parameters::progress(progress, CGAL::parameters::face_patch_map(patch_of))))))))))));
+
+  if(!o.save_patches.empty())
+  {
+    try
+    {
+      progress("saving the patches to " + o.save_patches);
+      // The patches remesh_conformal() meshes: the segmentation's, and the halves of those whose
+      // flattening fails or stretches too much.
+      CR::Poly_annulus_segmentation segmentation;
+      CR::segment_into_poly_annuli(input, segmentation, CR::parameters::snap_distance(0.1 * target, np));
+      CR::Flattened_poly_annuli flattened;
+      CR::flatten_poly_annuli(segmentation, flattened,
+                              CR::parameters::maximum_edge_length(
+                                2. * target, CR::parameters::snap_distance(
+                                               0.1 * target, CR::parameters::maximum_running_time(remaining_time(), np))));
+      for(std::size_t p = 0; p < flattened.patches.size(); ++p)
+      {
+        const std::string name = o.save_patches + "/patch_" + std::to_string(p);
+        tools::write_file_atomically_at(name + ".off", [&](const std::string& temporary) {
+          return CGAL::IO::write_polygon_mesh(temporary, flattened.patches[p].mesh, CGAL::parameters::stream_precision(17));
+        });
+        tools::write_file_atomically(name + "_flattening.svg", tools::welded_domain_svg(flattened.flattenings[p]));
+      }
+    }
+    catch(const CR::Error& e)
+    {
+      if(e.code() == CR::Error_code::TIME_LIMIT_EXCEEDED)
+        return out_of_time(e.what());
+      std::cerr << tool_message(e.what()) << "\n";
+      return 1;
+    }
+    catch(const std::exception& e)
+    {
+      std::cerr << tool_message(e.what()) << "\n";
+      return 2;
+    }
+  }
+
+  Mesh output;
+  CR::Remeshing_report report;
+  CR::Remeshing_statistics statistics;
+  try
+  {
+    progress("remeshing " + std::to_string(input.number_of_faces()) + " faces");
+    const auto limited = CR::parameters::patch_job_runner(runner, CR::parameters::repair_input(
+      o.repair, CR::parameters::statistics(std::ref(statistics), CR::parameters::maximum_running_time(remaining_time(), np))));
+    report = o.sequential ? CR::remesh_conformal<CGAL::Sequential_tag>(input, output, limited)
+                          : CR::remesh_conformal<CGAL::Parallel_if_available_tag>(input, output, limited);
+  }
+  catch(const CR::Error& e)
+  {
+    if(e.code() == CR::Error_code::TIME_LIMIT_EXCEEDED)
+      return out_of_time(e.what());
+    std::cerr << tool_message(e.what()) << "\n";
+    return 1;
+  }
+  progress("measuring quality and fidelity");
+  const CR::Mesh_quality_report before = CR::mesh_quality(input), after = CR::mesh_quality(output);
+  const CR::Reference_comparison fidelity = CR::compare_to_reference(output, input);
+  CR::Face_deviations deviations;
+  if(!o.deviation_map.empty())
+  {
+    progress("measuring the distance of every face to the other surface");
+    deviations = CR::face_deviations(output, input);
+  }
+
+  try
+  {
+    tools::write_file_atomically_at(o.output, [&](const std::string& temporary) {
+      return CGAL::IO::write_polygon_mesh(temporary, output, CGAL::parameters::stream_precision(17));
+    });
+    if(!o.report.empty())
+    {
+      tools::Json_writer json;
+      json.begin_object().field("input", o.input).field("output", o.output).field("target_edge_length", report.target_edge_length);
+      // The options the output depends on, to rerun it (the sequential or parallel run gives the same).
+      json.key("parameters").begin_object().field("min_angle", o.min_angle).field("features_angle", o.features_angle).field("crease_angle", o.crease_angle)
+          .field("optimization_rounds", o.optimization_rounds).field("lloyd_iterations", o.lloyd_iterations)
+          .field("chord_error", o.chord_error).field("cut_planes", o.planes.size()).field("patches", o.patches)
+          .field("repair", o.repair).field("frontal_insertion", o.frontal).end_object();
+      json.key("input_repairs").begin_object().field("triangulated_polygons", repaired.triangulated_polygons)
+          .field("triangles_from_polygons", repaired.triangles_from_polygons).field("reoriented_faces", repaired.reoriented_faces)
+          .field("removed_isolated_vertices", repaired.removed_isolated_vertices)
+          .field("stitched_vertices", repaired.stitched_vertices).field("split_non_manifold_vertices", repaired.split_vertices
+                                                                                           + report.input.split_non_manifold_vertices)
+          .field("removed_degenerate_faces", report.input.removed_degenerate_faces)
+          .field("coincident_vertices", report.input.coincident_vertices)
+          .field("coincident_example", report.input.coincident_example)
+          .field("non_manifold_example", report.input.non_manifold_example)
+          .field("degenerate_example", report.input.degenerate_example)
+          .field("input_crosses_itself", report.input_crosses_itself).end_object();
+      json.key("seconds").begin_object().field("segmentation", statistics.seconds_segmentation)
+          .field("flattening", statistics.seconds_flattening).field("meshing_and_pull_back", statistics.seconds_meshing_stage)
+          .field("gluing", statistics.seconds_gluing).field("proximity", statistics.seconds_proximity)
+          .field("ricci_flow_thread_seconds", statistics.seconds_ricci_flow)
+          .field("planar_meshing_thread_seconds", statistics.seconds_planar_meshing)
+          .field("optimization_thread_seconds", statistics.seconds_optimization)
+          .field("pull_back_thread_seconds", statistics.seconds_pull_back);
+      json.key("meshing_phase_thread_seconds").begin_object();
+      CR::Meshing_phase_seconds::for_each_phase(
+        [&](const char* name, double CR::Meshing_phase_seconds::*phase) { json.field(name, statistics.meshing_phases.*phase); });
+      json.end_object().end_object();
+      json.key("segmentation").begin_object().field("patches", report.number_of_patches)
+          .field("features_dropped", report.features_dropped).field("features_fallback_reason", report.features_fallback_reason)
+          .field("plane_cuts", report.plane_cuts).field("patch_bisections", report.patch_bisections)
+          .field("feature_edges", report.feature_edges).field("dangling_feature_edges", report.dangling_feature_edges)
+          .field("boundary_curves", statistics.boundary_curves).field("refined_boundary_curves", report.refined_boundary_curves)
+          .field("split_diagonals", report.split_diagonals).end_object();
+      // Where sheets of the input come within a target length of each other (measured with a
+      // chord error; smallest_gap null: nowhere or not measured).
+      json.key("proximity").begin_object().field("measured", !std::isnan(report.smallest_gap))
+          .field("smallest_gap", report.smallest_gap);
+      json.key("smallest_gap_point").begin_array();
+      for(double c : report.smallest_gap_point)
+        json.value(std::isfinite(report.smallest_gap) ? c : std::numeric_limits<double>::quiet_NaN());
+      json.end_array().field("gap_bounded_vertices", report.gap_bounded_vertices).end_object();
+      json.key("frontal_insertion").begin_object().field("dropped", report.frontal_dropped)
+          .field("fallback_reason", report.frontal_fallback_reason).end_object();
+      json.key("flattening").begin_object().field("max_iterations", statistics.max_newton_iterations)
+          .field("max_curvature_error", statistics.max_curvature_error).field("flips", statistics.flips)
+          .field("retriangulated_faces", statistics.retriangulated_faces).field("max_scale_ratio", statistics.max_scale_ratio).end_object();
+      json.field("boundary_samples", statistics.boundary_samples).field("clamped_vertices", statistics.clamped_vertices)
+          .field("optimization_flips", statistics.optimization_flips).field("optimization_splits", statistics.optimization_splits)
+          .field("optimization_chord_splits", statistics.optimization_chord_splits)
+          .field("optimization_collapses", statistics.optimization_collapses).field("flips_after_gluing", statistics.flips_after_gluing)
+          .field("moves_after_gluing", statistics.moves_after_gluing)
+          .field("patch_jobs_run", statistics.patch_jobs_run).field("patch_jobs_kept", statistics.patch_jobs_kept)
+          .field("self_intersection_refinements", report.self_intersection_refinements);
+      json.key("input_quality");
+      tools::write_json(json, before);
+      json.key("output_quality");
+      tools::write_json(json, after);
+      json.key("fidelity");
+      tools::write_json(json, fidelity);
+      if(!o.deviation_map.empty())
+      {
+        // Largest distance per face, in target lengths, and its histogram.
+        json.key("deviation").begin_object().key("output_faces_to_input");
+        tools::write_deviation_json(json, deviations.of_mesh_faces, report.target_edge_length);
+        json.key("input_faces_to_output");
+        tools::write_deviation_json(json, deviations.of_reference_faces, report.target_edge_length);
+        json.end_object();
+      }
+      json.end_object();
+      tools::write_file_atomically(o.report, json.str());
+    }
+    if(!o.deviation_map.empty())
+      tools::write_deviation_maps(o.deviation_map, output, input, deviations, report.target_edge_length);
+    if(!o.plots.empty())
+      tools::write_file_atomically(o.plots + "/quality.svg",
+                                   tools::quality_histograms_svg({{"input: " + o.input, before}, {"remeshed: " + o.output, after}},
+                                                                 "Mesh quality before and after conformal remeshing"));
+  }
+  catch(const std::exception& e)
+  {
+    std::cerr << tool_message(e.what()) << "\n";
+    return 2;
+  }
+
+  std::cout << o.output << ": " << output.number_of_vertices() << " vertices, " << output.number_of_faces()
+            << " faces (target edge length " << report.target_edge_length << ")\n"
+            << "  minimum angle " << after.minimum_angle.min << " deg (input " << before.minimum_angle.min << "), "
+            << 100. * after.share_with_minimum_angle_below(25.) << "% of triangles below 25 deg, mean skewness "
+            << after.skewness.mean << " (input " << before.skewness.mean << ")\n"
+            << "  Hausdorff distance to / from the input: " << fidelity.relative_distance_to_reference << " / "
+            << fidelity.relative_distance_from_reference << " x diagonal; self-intersections: "
+            << (fidelity.self_intersects ? (report.input_crosses_itself ? "YES (the input crosses itself too)" : "YES") : "none")
+            << "\n"
+            << "  " << report.number_of_patches << " patches (" << report.plane_cuts << " plane cuts, "
+            << report.feature_edges << " feature edges" << (report.features_dropped ? ", dropped: no flattening with them" : "")
+            << "); seconds: segmentation " << statistics.seconds_segmentation
+            << ", flattening " << statistics.seconds_flattening << ", meshing and pull-back " << statistics.seconds_meshing_stage
+            << ", gluing " << statistics.seconds_gluing << "\n";
+  if(!o.deviation_map.empty())
+    std::cout << "  distance of the output's faces to the input, in target lengths: "
+              << tools::deviation_histogram_line(deviations.of_mesh_faces, report.target_edge_length)
+              << "\n  distance of the input's faces to the output: "
+              << tools::deviation_histogram_line(deviations.of_reference_faces, report.target_edge_length) << "\n";
+  if(std::isfinite(report.smallest_gap))
+    std::cout << "  sheets of the input " << report.smallest_gap << " apart at (" << report.smallest_gap_point[0] << ", "
+              << report.smallest_gap_point[1] << ", " << report.smallest_gap_point[2] << "); the gaps shortened the target at "
+              << report.gap_bounded_vertices << " input vertices\n";
+  return 0;
+}
+
+} // namespace Conformal_remeshing_tools
+
+#endif // CONFORMAL_REMESHING_TOOLS_REMESH_CONFORMAL_TOOL_H
