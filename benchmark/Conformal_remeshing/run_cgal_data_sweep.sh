@@ -45,7 +45,7 @@ build="${BUILD_DIR:-$root/build/benchmark}"
 # --- build (Release) and data ---------------------------------------------------------------------
 bash "$root/scripts/install_dependencies.sh"
 bash "$root/scripts/fetch_cgal_data.sh"
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=OFF >/dev/null
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=OFF -DCGAL_CONFORMAL_REMESHING_BUILD_EXAMPLES=ON >/dev/null
 cmake --build "$build" --target remesh_conformal_tool -j "${JOBS:-$(nproc)}"
 tool="$build/examples/Conformal_remeshing/remesh_conformal"
 data="$root/.cache/cgal-data/data/meshes"

@@ -58,8 +58,7 @@ case ",$methods," in
   *,gmsh,*|*,meshlab,*) bash "$root/scripts/install_dependencies.sh" --benchmarks ;;
   *) bash "$root/scripts/install_dependencies.sh" ;;
 esac
-cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=OFF \
-      -DCGAL_CONFORMAL_REMESHING_BUILD_EXAMPLES=OFF >/dev/null
+cmake -S "$root" -B "$build" -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=OFF >/dev/null
 cmake --build "$build" --target generate_paper_model paper_benchmark paper_benchmark_summary \
       -j "${JOBS:-$(nproc)}"
 bin="$build/benchmark/Conformal_remeshing"

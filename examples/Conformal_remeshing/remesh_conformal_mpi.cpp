@@ -10,7 +10,8 @@
 // boundary samples, split diagonals, finer sizes where the output intersected itself) travels
 // without it. The output file is byte for byte that of remesh_conformal with the same options;
 // with one process (no workers), the jobs run in rank 0's threads. Rank 0 prints, at the end, the
-// jobs each rank ran, the bytes sent and received and how long rank 0 waited for the workers.
+// jobs each rank ran, the bytes sent and received, how long rank 0 waited for the workers and the
+// peak resident memory of every rank.
 // Exit codes: those of remesh_conformal.
 
 #include "remesh_conformal_tool.h"
@@ -18,10 +19,12 @@
 #include <CGAL/Conformal_remeshing/internal/remeshing/patch_job_io.h>
 
 #include <mpi.h>
+#include <sys/resource.h>
 
 #include <algorithm>
 #include <chrono>
 #include <climits>
+#include <cmath>
 #include <cstdio>
 #include <iostream>
 #include <numeric>
@@ -35,6 +38,13 @@ namespace RM = CGAL::Conformal_remeshing::internal::remeshing;
 namespace {
 
 enum Tag { job_tag = 1, result_tag = 2, stop_tag = 3 };
+
+// This process's peak resident memory so far, in MB.
+double peak_resident_megabytes()
+{
+  struct rusage usage;
+  return getrusage(RUSAGE_SELF, &usage) == 0 ? double(usage.ru_maxrss) / 1024. : -1.;
+}
 
 void send_bytes(const std::string& bytes, int rank, int tag)
 {
@@ -79,8 +89,29 @@ public:
       ++jobs_run_[std::size_t(rank)];
       ++busy;
     };
-    for(int rank = 1; rank < int(surfaces_sent_.size()) && next < order.size(); ++rank)
-      hand_out(rank);
+    try
+    {
+      for(int rank = 1; rank < int(surfaces_sent_.size()) && next < order.size(); ++rank)
+        hand_out(rank);
+      gather(order, next, busy, hand_out, remeshed, failures);
+    }
+    catch(...)
+    {
+      // The workers still meshing send their results: take them, so that they are free to stop.
+      for(; busy > 0; --busy)
+      {
+        MPI_Status status;
+        receive_bytes(MPI_ANY_SOURCE, result_tag, status);
+      }
+      throw;
+    }
+  }
+
+  // Takes each result as it comes and hands its rank the next job.
+  template <typename Hand_out>
+  void gather(const std::vector<std::size_t>& order, std::size_t& next, std::size_t& busy, const Hand_out& hand_out,
+              std::vector<RM::Remeshed_patch>& remeshed, std::vector<std::string>& failures)
+  {
     while(busy > 0)
     {
       const auto start = std::chrono::steady_clock::now();
@@ -179,32 +210,40 @@ int main(int argc, char** argv)
     work();
   else
   {
+    bool help = false;
     for(int i = 1; i < argc; ++i)
-      if(std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h")
-      {
-        std::cout << usage();
-        for(int worker = 1; worker < ranks; ++worker)
-          MPI_Send(nullptr, 0, MPI_BYTE, worker, stop_tag, MPI_COMM_WORLD);
-        MPI_Finalize();
-        return 0;
-      }
+      help = help || std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h";
     Job_dispatcher dispatcher(ranks);
     RM::Patch_job_runner runner;
     if(ranks > 1)
       runner = std::ref(dispatcher);
     try
     {
-      exit_code = Conformal_remeshing_tools::remesh_conformal_main(argc, argv, runner);
+      if(help)
+        std::cout << usage();
+      else
+        exit_code = Conformal_remeshing_tools::remesh_conformal_main(argc, argv, runner);
     }
     catch(const std::exception& e)
     {
       std::cerr << "remesh_conformal_mpi: " << e.what() << "\n";
       exit_code = 2;
     }
-    if(ranks > 1 && exit_code != 2)
+    if(ranks > 1 && !help && exit_code != 2)
       dispatcher.print_summary(std::cerr);
     for(int worker = 1; worker < ranks; ++worker)
       MPI_Send(nullptr, 0, MPI_BYTE, worker, stop_tag, MPI_COMM_WORLD);
+  }
+  // Every rank's peak memory, printed by rank 0.
+  const double peak = peak_resident_megabytes();
+  std::vector<double> peaks(std::size_t(ranks), 0.);
+  MPI_Gather(&peak, 1, MPI_DOUBLE, peaks.data(), 1, MPI_DOUBLE, 0, MPI_COMM_WORLD);
+  if(rank == 0 && ranks > 1 && exit_code == 0)
+  {
+    std::cerr << "remesh_conformal_mpi: peak resident MB per rank: ";
+    for(int r = 0; r < ranks; ++r)
+      std::cerr << (r ? ", " : "") << std::lround(peaks[std::size_t(r)]);
+    std::cerr << "\n";
   }
   MPI_Finalize();
   return exit_code;

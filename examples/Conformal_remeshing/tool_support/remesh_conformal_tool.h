@@ -21,6 +21,8 @@
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <sys/resource.h>
+
 #include <algorithm>
 #include <functional>
 #include <chrono>
@@ -95,6 +97,13 @@ struct Options
 
 // A message for standard error: the library's errors name their function, which is the tool's
 // name too, and are not prefixed twice.
+// This process's peak resident memory so far, in MB (getrusage; -1 where unknown).
+inline double peak_resident_megabytes()
+{
+  struct rusage usage;
+  return getrusage(RUSAGE_SELF, &usage) == 0 ? double(usage.ru_maxrss) / 1024. : -1.;
+}
+
 inline std::string tool_message(const std::string& what)
 {
   const std::string prefix = "remesh_conformal: ";
@@ -432,6 +441,12 @@ inline int remesh_conformal_main(int argc, char** argv,
           .field("moves_after_gluing", statistics.moves_after_gluing)
           .field("patch_jobs_run", statistics.patch_jobs_run).field("patch_jobs_kept", statistics.patch_jobs_kept)
           .field("self_intersection_refinements", report.self_intersection_refinements);
+      // Each patch job's seconds, for a scheduler over processes (the car benchmark replays them).
+      json.key("patch_job_seconds").begin_array();
+      for(double seconds : statistics.patch_job_seconds)
+        json.value(seconds);
+      json.end_array();
+      json.field("peak_resident_mb", peak_resident_megabytes());
       json.key("input_quality");
       tools::write_json(json, before);
       json.key("output_quality");

@@ -159,6 +159,10 @@ struct Remeshing_statistics
   /// seconds summed over the patches (thread time; the optimization's vertex moves within a
   /// patch run in parallel too, so `seconds_optimization` sums the patches' wall time)
   double seconds_ricci_flow = 0., seconds_planar_meshing = 0., seconds_optimization = 0., seconds_pull_back = 0.;
+  /// the seconds of each patch job run (its planar meshing, optimization and pull-back), in the
+  /// order of the patches, round after round of the meshing stage: what a scheduler of the jobs
+  /// over processes works with (the car benchmark replays it)
+  std::vector<double> patch_job_seconds;
   /// the planar meshing's and the optimization's seconds by phase
   Meshing_phase_seconds meshing_phases;
 };

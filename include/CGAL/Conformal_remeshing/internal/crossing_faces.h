@@ -19,6 +19,8 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 #include <CGAL/Polygon_mesh_processing/self_intersections.h>
 
+#include <boost/iterator/function_output_iterator.hpp>
+
 #include <algorithm>
 #include <array>
 #include <iterator>
@@ -85,15 +87,44 @@ crossing_face_pairs(const TriangleMesh& mesh, const NamedParameters& np = CGAL::
   return pairs;
 }
 
-/// Whether `mesh` has faces that cross (see `crossing_face_pairs()`).
+/// Whether `mesh` has faces that cross (see `crossing_face_pairs()`). Stops at the first
+/// crossing pair: a mesh with many overlapping faces (another remesher's output that folds) would
+/// otherwise collect millions of pairs.
 template <typename ConcurrencyTag, typename TriangleMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
 bool has_crossing_faces(const TriangleMesh& mesh, const NamedParameters& np = CGAL::parameters::default_values())
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
+  typedef typename boost::graph_traits<TriangleMesh>::face_descriptor Face;
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(vertex_point, mesh));
-  return Polygon_mesh_processing::does_self_intersect<ConcurrencyTag>(mesh, CGAL::parameters::vertex_point_map(vpm))
-         && !crossing_face_pairs<ConcurrencyTag>(mesh, np).empty(); // the first test stops at the first pair
+  typedef typename boost::property_traits<std::decay_t<decltype(vpm)> >::value_type Point;
+  if(!Polygon_mesh_processing::does_self_intersect<ConcurrencyTag>(mesh, CGAL::parameters::vertex_point_map(vpm)))
+    return false;
+  // Some pair intersects: look for one that is more than a contact, one pair at a time.
+  struct Found
+  {};
+  const auto corners = [&](Face f) {
+    std::array<Point, 3> t;
+    int c = 0;
+    for(auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
+      if(c < 3)
+        t[c++] = get(vpm, v);
+    return t;
+  };
+  const auto check = [&](const std::pair<Face, Face>& p) {
+    if(p.first == p.second || !is_contact(corners(p.first), corners(p.second)))
+      throw Found();
+  };
+  try
+  {
+    Polygon_mesh_processing::self_intersections<CGAL::Sequential_tag>(mesh, boost::make_function_output_iterator(check),
+                                                                      CGAL::parameters::vertex_point_map(vpm));
+  }
+  catch(const Found&)
+  {
+    return true;
+  }
+  return false;
 }
 
 } // namespace internal

@@ -56,6 +56,7 @@ inline void add_meshing_statistics(const Meshed_patches& meshed, Remeshing_stati
     statistics.seconds_planar_meshing += r.seconds_planar_meshing;
     statistics.seconds_optimization += r.seconds_optimization;
     statistics.seconds_pull_back += r.seconds_pull_back;
+    statistics.patch_job_seconds.push_back(r.seconds_planar_meshing + r.seconds_optimization + r.seconds_pull_back);
     statistics.meshing_phases += r.phases;
     statistics.optimization_flips += r.optimization.flips;
     statistics.optimization_splits += r.optimization.splits;
