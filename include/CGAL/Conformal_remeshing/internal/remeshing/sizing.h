@@ -255,7 +255,15 @@ public:
           box += m.point(w).bbox();
         }
     }
-    return Patch_size_field(target_, gradation_, field_, refinement_.within(box, target_), std::move(corners));
+    Local_refinement near = refinement_.within(box, target_);
+    // A patch that no smaller size reaches is uniform, as it would be without them: its job then
+    // equals the one of a call without the local refinements, whose mesh is kept.
+    const bool all_at_target = std::all_of(corners.begin(), corners.end(), [&](const std::array<Patch_size_field::Corner, 3>& c) {
+      return c[0].size == target_ && c[1].size == target_ && c[2].size == target_;
+    });
+    if(all_at_target && near.empty() && !field_)
+      return Patch_size_field(target_);
+    return Patch_size_field(target_, gradation_, field_, std::move(near), std::move(corners));
   }
 
   /// The size at the point at parameter `t` in [0, 1] of the edge from `a` to `b`.
