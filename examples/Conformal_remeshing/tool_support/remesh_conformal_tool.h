@@ -30,6 +30,7 @@
 #include <fstream>
 #include <iostream>
 #include <limits>
+#include <new>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -104,9 +105,12 @@ inline double peak_resident_megabytes()
   return getrusage(RUSAGE_SELF, &usage) == 0 ? double(usage.ru_maxrss) / 1024. : -1.;
 }
 
+// The message of an error, prefixed with the tool's name once; std::bad_alloc says what it is.
 inline std::string tool_message(const std::string& what)
 {
   const std::string prefix = "remesh_conformal: ";
+  if(what == std::bad_alloc().what())
+    return prefix + "out of memory (" + std::to_string(std::lround(peak_resident_megabytes())) + " MB resident at the most)";
   return what.compare(0, prefix.size(), prefix) == 0 ? what : prefix + what;
 }
 
@@ -213,12 +217,11 @@ inline bool parse(int argc, char** argv, Options& o)
 
 } // namespace remesh_conformal_tool
 
-/// The tool remesh_conformal on the command line `argc`, `argv`; returns its exit code. The
-/// patch jobs run in this process's threads, or by `runner` when it is set (remesh_conformal_mpi).
-inline int remesh_conformal_main(int argc, char** argv,
-                                 const CGAL::Conformal_remeshing::internal::remeshing::Patch_job_runner& runner = {})
+namespace remesh_conformal_tool {
+
+// The tool's work; `remesh_conformal_main()` turns what escapes it into a message.
+inline int run(int argc, char** argv, const CGAL::Conformal_remeshing::internal::remeshing::Patch_job_runner& runner)
 {
-  using namespace remesh_conformal_tool;
   const auto start = std::chrono::steady_clock::now();
   for(int i = 1; i < argc; ++i)
     if(std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h")
@@ -502,6 +505,25 @@ inline int remesh_conformal_main(int argc, char** argv,
               << report.smallest_gap_point[1] << ", " << report.smallest_gap_point[2] << "); the gaps shortened the target at "
               << report.gap_bounded_vertices << " input vertices\n";
   return 0;
+}
+
+} // namespace remesh_conformal_tool
+
+/// The tool remesh_conformal on the command line `argc`, `argv`; returns its exit code. The
+/// patch jobs run in this process's threads, or by `runner` when it is set (remesh_conformal_mpi).
+/// Running out of memory anywhere is exit code 2 with a message, nothing written.
+inline int remesh_conformal_main(int argc, char** argv,
+                                 const CGAL::Conformal_remeshing::internal::remeshing::Patch_job_runner& runner = {})
+{
+  try
+  {
+    return remesh_conformal_tool::run(argc, argv, runner);
+  }
+  catch(const std::exception& e)
+  {
+    std::cerr << remesh_conformal_tool::tool_message(e.what()) << "; no output written\n";
+  }
+  return 2;
 }
 
 } // namespace Conformal_remeshing_tools
