@@ -8,11 +8,10 @@
 //
 // The input's polygons are triangulated, its faces oriented consistently, its isolated vertices
 // removed and its borders along the same points stitched first (CR::Input_repairs), unless
-// --no-repair. Progress goes to standard
-// error; OUT is written completely or not at all. Exit codes: 0
-// success, 1 the input cannot be remeshed (defects, unsupported topology, failed flattening),
-// 2 the tool could not run (bad arguments, unreadable input, unwritable output), 3 the time
-// limit was exceeded (nothing written).
+// --no-repair. Progress goes to standard error; OUT is written completely or not at all. Exit
+// codes: 0 success, 1 the input cannot be remeshed (defects, unsupported topology, failed
+// flattening), 2 the tool could not run (bad arguments, unreadable input, unwritable output, out
+// of memory), 3 the time limit was exceeded (nothing written).
 
 #include "remesh_conformal_tool.h"
 
