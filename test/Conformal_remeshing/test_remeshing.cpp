@@ -202,6 +202,15 @@ TEST(RemeshConformal, ReportsWhereTheMeshingStageTimeGoes)
     EXPECT_GE(seconds, 0.);
   for(double seconds : {phases.planar_refinement, phases.planar_smoothing, phases.first_rounds, phases.splits, phases.skewness_passes})
     EXPECT_GT(seconds, 0.);
+  // The peak memory at the end of each stage is the largest so far: it never falls.
+  EXPECT_GT(report.peak_resident_mb_segmentation, 1.);
+  EXPECT_LE(report.peak_resident_mb_segmentation, report.peak_resident_mb_flattening);
+  EXPECT_LE(report.peak_resident_mb_flattening, report.peak_resident_mb_meshing);
+  EXPECT_LE(report.peak_resident_mb_meshing, report.peak_resident_mb_gluing);
+  // One job per patch at least, each with its seconds.
+  EXPECT_GE(report.patch_job_seconds.size(), report.patches.size());
+  for(double seconds : report.patch_job_seconds)
+    EXPECT_GE(seconds, 0.);
   EXPECT_NEAR(planar_sum(phases), report.seconds_planar_meshing, 1e-9);
   EXPECT_NEAR(optimization_sum(phases), report.seconds_optimization, 1e-9);
   // (No bound on the phases' shares of the stage: on a loaded machine the set-up took 54% of a

@@ -450,6 +450,9 @@ inline int run(int argc, char** argv, const CGAL::Conformal_remeshing::internal:
         json.value(seconds);
       json.end_array();
       json.field("peak_resident_mb", peak_resident_megabytes());
+      json.key("peak_resident_mb_after").begin_object().field("segmentation", statistics.peak_resident_mb_segmentation)
+          .field("flattening", statistics.peak_resident_mb_flattening).field("meshing", statistics.peak_resident_mb_meshing)
+          .field("gluing", statistics.peak_resident_mb_gluing).end_object();
       json.key("input_quality");
       tools::write_json(json, before);
       json.key("output_quality");

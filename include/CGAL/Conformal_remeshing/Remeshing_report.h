@@ -165,6 +165,11 @@ struct Remeshing_statistics
   std::vector<double> patch_job_seconds;
   /// the planar meshing's and the optimization's seconds by phase
   Meshing_phase_seconds meshing_phases;
+  /// the process's peak resident memory in MB at the end of the segmentation, the flattening, the
+  /// meshing and the gluing: the largest so far, so the stage where it rises holds the peak (-1
+  /// where the platform does not tell)
+  double peak_resident_mb_segmentation = -1., peak_resident_mb_flattening = -1., peak_resident_mb_meshing = -1.,
+         peak_resident_mb_gluing = -1.;
 };
 
 /// \ingroup PkgConformalRemeshingRef

@@ -22,6 +22,7 @@
 
 #include <CGAL/Conformal_remeshing/Error.h>
 #include <CGAL/Conformal_remeshing/Remeshing_report.h>
+#include <CGAL/Conformal_remeshing/internal/process_memory.h>
 #include <CGAL/Conformal_remeshing/internal/time_limit.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/glue_patches.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/mesh_patches.h>
@@ -118,6 +119,7 @@ Glued_output<TriangleMesh> mesh_and_glue(const Flattened_surface& surface, const
                                                             options.patch_job_runner, time_limit, progress,
                                                             report, refinement == 0 ? nullptr : &meshed, crossing_patches);
     statistics.seconds_meshing_stage += seconds_since(start);
+    statistics.peak_resident_mb_meshing = peak_resident_megabytes();
     add_meshing_statistics(meshed, statistics);
 
     start = Clock::now();
@@ -125,6 +127,7 @@ Glued_output<TriangleMesh> mesh_and_glue(const Flattened_surface& surface, const
     Glued_output<TriangleMesh> glued = glue_patches<ConcurrencyTag, TriangleMesh>(
       meshed, surface.segmentation, sizing, options.minimum_angle, input_self_intersects, statistics);
     statistics.seconds_gluing += seconds_since(start);
+    statistics.peak_resident_mb_gluing = peak_resident_megabytes();
     if(!glued.intersects)
       return glued;
     if(refinement == max_self_intersection_refinements || glued.crossings.empty())

@@ -13,6 +13,7 @@
 #include <CGAL/Conformal_remeshing/flatten_poly_annuli.h>
 #include <CGAL/Conformal_remeshing/parameters.h>
 #include <CGAL/Conformal_remeshing/segment_into_poly_annuli.h>
+#include <CGAL/Conformal_remeshing/internal/process_memory.h>
 #include <CGAL/Conformal_remeshing/internal/parallel_for_each_index.h>
 #include <CGAL/Conformal_remeshing/internal/time_limit.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/flattened_patch.h>
@@ -92,12 +93,14 @@ void segment_and_flatten(const TriangleMesh& input, const Remeshing_options& opt
     progress("segmenting into poly-annuli");
     segment_into_poly_annuli(input, result.segmentation, segmentation_parameters);
     statistics.seconds_segmentation += std::chrono::duration<double>(Clock::now() - start).count();
+    statistics.peak_resident_mb_segmentation = peak_resident_megabytes();
     time_limit.check("after the segmentation");
     start = Clock::now();
     flatten_poly_annuli<ConcurrencyTag>(result.segmentation, flattened,
                                         parameters::maximum_edge_length(flow_length, parameters::snap_distance(snap, np)),
                                         time_limit, "remesh_conformal");
     statistics.seconds_flattening += std::chrono::duration<double>(Clock::now() - start).count();
+    statistics.peak_resident_mb_flattening = peak_resident_megabytes();
   };
   try
   {
