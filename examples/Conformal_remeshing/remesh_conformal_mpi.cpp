@@ -16,11 +16,10 @@
 
 #include "remesh_conformal_tool.h"
 
+#include <CGAL/Conformal_remeshing/internal/process_memory.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/patch_job_io.h>
 
 #include <mpi.h>
-#include <sys/resource.h>
-
 #include <algorithm>
 #include <chrono>
 #include <climits>
@@ -39,12 +38,7 @@ namespace {
 
 enum Tag { job_tag = 1, result_tag = 2, stop_tag = 3 };
 
-// This process's peak resident memory so far, in MB.
-double peak_resident_megabytes()
-{
-  struct rusage usage;
-  return getrusage(RUSAGE_SELF, &usage) == 0 ? double(usage.ru_maxrss) / 1024. : -1.;
-}
+using CGAL::Conformal_remeshing::internal::peak_resident_megabytes;
 
 void send_bytes(const std::string& bytes, int rank, int tag)
 {

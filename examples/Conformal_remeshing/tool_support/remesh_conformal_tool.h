@@ -15,13 +15,12 @@
 #include <CGAL/Conformal_remeshing/flatten_poly_annuli.h>
 #include <CGAL/Conformal_remeshing/mesh_quality.h>
 #include <CGAL/remesh_conformal.h>
+#include <CGAL/Conformal_remeshing/internal/process_memory.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/patch_job.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 #include <CGAL/Surface_mesh.h>
-
-#include <sys/resource.h>
 
 #include <algorithm>
 #include <functional>
@@ -98,12 +97,7 @@ struct Options
 
 // A message for standard error: the library's errors name their function, which is the tool's
 // name too, and are not prefixed twice.
-// This process's peak resident memory so far, in MB (getrusage; -1 where unknown).
-inline double peak_resident_megabytes()
-{
-  struct rusage usage;
-  return getrusage(RUSAGE_SELF, &usage) == 0 ? double(usage.ru_maxrss) / 1024. : -1.;
-}
+using CGAL::Conformal_remeshing::internal::peak_resident_megabytes;
 
 // The message of an error, prefixed with the tool's name once; std::bad_alloc says what it is.
 inline std::string tool_message(const std::string& what)

@@ -59,6 +59,22 @@ bool is_contact(const std::array<Point, 3>& a, const std::array<Point, 3>& b)
   return !Polygon_mesh_processing::does_self_intersect(pair);
 }
 
+/// Whether the faces `a` and `b` of `mesh`, which intersect, cross (are not a contact).
+template <typename TriangleMesh, typename VertexPointMap, typename Face>
+bool is_crossing(const TriangleMesh& mesh, const VertexPointMap& vpm, Face a, Face b)
+{
+  typedef typename boost::property_traits<VertexPointMap>::value_type Point;
+  const auto corners = [&](Face f) {
+    std::array<Point, 3> t;
+    int c = 0;
+    for(auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
+      if(c < 3)
+        t[c++] = get(vpm, v);
+    return t;
+  };
+  return a == b || !is_contact(corners(a), corners(b));
+}
+
 /// The pairs of faces of `mesh` that intersect and are not a contact (see `is_contact()`).
 template <typename ConcurrencyTag, typename TriangleMesh, typename NamedParameters = CGAL::parameters::Default_named_parameters>
 std::vector<std::pair<typename boost::graph_traits<TriangleMesh>::face_descriptor,
@@ -69,20 +85,11 @@ crossing_face_pairs(const TriangleMesh& mesh, const NamedParameters& np = CGAL::
   using CGAL::parameters::get_parameter;
   typedef typename boost::graph_traits<TriangleMesh>::face_descriptor Face;
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(vertex_point, mesh));
-  typedef typename boost::property_traits<std::decay_t<decltype(vpm)> >::value_type Point;
   std::vector<std::pair<Face, Face> > pairs;
   Polygon_mesh_processing::self_intersections<ConcurrencyTag>(mesh, std::back_inserter(pairs),
                                                               CGAL::parameters::vertex_point_map(vpm));
-  const auto corners = [&](Face f) {
-    std::array<Point, 3> t;
-    int c = 0;
-    for(auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
-      if(c < 3)
-        t[c++] = get(vpm, v);
-    return t;
-  };
   pairs.erase(std::remove_if(pairs.begin(), pairs.end(),
-                             [&](const std::pair<Face, Face>& p) { return p.first != p.second && is_contact(corners(p.first), corners(p.second)); }),
+                             [&](const std::pair<Face, Face>& p) { return !is_crossing(mesh, vpm, p.first, p.second); }),
               pairs.end());
   return pairs;
 }
@@ -97,22 +104,13 @@ bool has_crossing_faces(const TriangleMesh& mesh, const NamedParameters& np = CG
   using CGAL::parameters::get_parameter;
   typedef typename boost::graph_traits<TriangleMesh>::face_descriptor Face;
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point), get_const_property_map(vertex_point, mesh));
-  typedef typename boost::property_traits<std::decay_t<decltype(vpm)> >::value_type Point;
   if(!Polygon_mesh_processing::does_self_intersect<ConcurrencyTag>(mesh, CGAL::parameters::vertex_point_map(vpm)))
     return false;
   // Some pair intersects: look for one that is more than a contact, one pair at a time.
   struct Found
   {};
-  const auto corners = [&](Face f) {
-    std::array<Point, 3> t;
-    int c = 0;
-    for(auto v : CGAL::vertices_around_face(halfedge(f, mesh), mesh))
-      if(c < 3)
-        t[c++] = get(vpm, v);
-    return t;
-  };
   const auto check = [&](const std::pair<Face, Face>& p) {
-    if(p.first == p.second || !is_contact(corners(p.first), corners(p.second)))
+    if(is_crossing(mesh, vpm, p.first, p.second))
       throw Found();
   };
   try

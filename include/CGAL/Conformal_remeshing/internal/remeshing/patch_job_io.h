@@ -425,6 +425,16 @@ void transfer(Archive& a, Remeshed_patch& r)
   transfer(a, r.kept_from_earlier_sizes);
 }
 
+// What a job holds besides its patch index and surface, in the order of its bytes.
+template <typename Archive>
+void transfer_job_after_surface(Archive& a, Patch_job& job)
+{
+  transfer(a, job.boundary);
+  Patch_job_serialization::transfer_size_field(a, job.size);
+  transfer(a, job.meshing);
+  transfer(a, job.diagonals_to_split);
+}
+
 /// The flattened surfaces a reader of jobs has received, by patch index.
 typedef std::map<std::size_t, std::shared_ptr<const Flattened_patch> > Patch_surfaces;
 
@@ -439,10 +449,7 @@ inline std::string write_patch_job(const Patch_job& job, bool with_surface)
   transfer(w, with_surface);
   if(with_surface)
     transfer(w, const_cast<Flattened_patch&>(*job.surface));
-  transfer(w, j.boundary);
-  Patch_job_serialization::transfer_size_field(w, j.size);
-  transfer(w, j.meshing);
-  transfer(w, j.diagonals_to_split);
+  transfer_job_after_surface(w, j);
   return std::move(w.bytes);
 }
 
@@ -466,10 +473,7 @@ inline Patch_job read_patch_job(const char* bytes, std::size_t size, Patch_surfa
   if(known == surfaces.end())
     throw Error(Error_code::INVALID_INPUT, "read_patch_job: the job of patch " + std::to_string(job.patch) + " comes without its surface");
   job.surface = known->second;
-  transfer(r, job.boundary);
-  Patch_job_serialization::transfer_size_field(r, job.size);
-  transfer(r, job.meshing);
-  transfer(r, job.diagonals_to_split);
+  transfer_job_after_surface(r, job);
   if(r.remaining() != 0)
     throw Error(Error_code::INVALID_INPUT, "read_patch_job: bytes left after the job");
   return job;
