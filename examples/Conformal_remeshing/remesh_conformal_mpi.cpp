@@ -26,6 +26,8 @@
 #include <cmath>
 #include <cstdio>
 #include <iostream>
+#include <map>
+#include <memory>
 #include <numeric>
 #include <set>
 #include <string>
@@ -76,7 +78,12 @@ public:
     std::size_t next = 0, busy = 0;
     const auto hand_out = [&](int rank) {
       const std::size_t p = order[next++];
-      const bool with_surface = surfaces_sent_[std::size_t(rank)].insert(p).second;
+      // A rank has the surface when it got this very one: the patch numbers start again with
+      // each batch of components (and each run), the surfaces do not.
+      std::weak_ptr<const RM::Flattened_patch>& sent = surfaces_sent_[std::size_t(rank)][p];
+      const bool with_surface = sent.lock() != jobs[p].surface;
+      if(with_surface)
+        sent = jobs[p].surface;
       const std::string bytes = RM::write_patch_job(jobs[p], with_surface);
       bytes_sent_ += bytes.size();
       send_bytes(bytes, rank, job_tag);
@@ -138,7 +145,8 @@ public:
   }
 
 private:
-  std::vector<std::set<std::size_t> > surfaces_sent_; // per rank, the patches whose surface it has
+  // per rank, the surface it has of each patch
+  std::vector<std::map<std::size_t, std::weak_ptr<const RM::Flattened_patch> > > surfaces_sent_;
   std::vector<std::size_t> jobs_run_;                 // per rank
   std::size_t bytes_sent_ = 0, bytes_received_ = 0;
   double seconds_waiting_ = 0.;

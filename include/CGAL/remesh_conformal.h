@@ -13,7 +13,7 @@
 #include <CGAL/Conformal_remeshing/parameters.h>
 #include <CGAL/Conformal_remeshing/internal/time_limit.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/prepare_input.h>
-#include <CGAL/Conformal_remeshing/internal/remeshing/remesh_prepared.h>
+#include <CGAL/Conformal_remeshing/internal/remeshing/component_batches.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/remeshing_options.h>
 
 #include <CGAL/Named_function_parameters.h>
@@ -117,6 +117,11 @@ namespace Conformal_remeshing {
 ///     \cgalParamType{`bool`}
 ///     \cgalParamDefault{`true`}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{batch_faces}
+///     \cgalParamDescription{an input of more faces than this and of several connected components (an assembly of parts) is remeshed a batch of whole components at a time, each batch of at most this many faces (a larger component is a batch of its own): each batch is segmented, flattened, meshed and glued alone and its flattenings released before the next, so that the peak memory is that of the largest batch rather than of the whole input. The batches' outputs are then checked against each other, and batches whose outputs cross where the input does not are remeshed together (`Remeshing_report::component_batches`, `Remeshing_report::merged_batches`). `0`: never in batches. The output of one batch equals that of the same components remeshed alone}
+///     \cgalParamType{`std::size_t`}
+///     \cgalParamDefault{`2000000`}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{maximum_scale_ratio}
 ///     \cgalParamDescription{a patch whose largest local scale exceeds its smallest by more than this is bisected}
 ///     \cgalParamType{`double`, above 1}
@@ -214,11 +219,11 @@ Remeshing_report remesh_conformal(const TriangleMesh& input, TriangleMesh& outpu
     !CGAL::parameters::is_default_parameter<NamedParameters, internal_np::vertex_locations_t>::value;
   stages::Remeshed_output<TriangleMesh> remeshed;
   if(!prepared.is_copy)
-    remeshed = stages::remesh_prepared<ConcurrencyTag, TriangleMesh>(input, np, options, time_limit, progress, report, statistics,
-                                                                     with_locations);
+    remeshed = stages::remesh_in_batches<ConcurrencyTag, TriangleMesh>(input, np, options, time_limit, progress, report, statistics,
+                                                                       with_locations);
   else
   {
-    remeshed = stages::remesh_prepared<ConcurrencyTag, TriangleMesh>(
+    remeshed = stages::remesh_in_batches<ConcurrencyTag, TriangleMesh>(
       prepared.mesh, stages::parameters_of_copy(prepared, input, np), options, time_limit, progress, report, statistics, false);
     if(with_locations)
       remeshed.locations = stages::locate_on_input(input, np, remeshed.points);

@@ -1,7 +1,9 @@
 // Sheets of the surface that come close to each other: parallel plates a fraction of the target
 // apart, two boxes a hair apart, a pipe whose walls are closer than the target, a fin cut apart
 // along its edge. Each is remeshed into a valid manifold that does not intersect itself, with
-// every vertex on the input surface; the report gives the smallest gap between sheets.
+// every vertex on the input surface; the report gives the smallest gap between sheets. An
+// assembly of parts remeshed in batches of components gives each part the mesh it has alone, and
+// parts of different batches that come close are remeshed together.
 
 #include "stage_tests.h"
 
@@ -10,6 +12,7 @@
 #include <CGAL/Conformal_remeshing/verify_remesh.h>
 
 #include <cstdio>
+#include <sstream>
 #include <fstream>
 #include <map>
 
@@ -262,4 +265,117 @@ TEST(SheetsInContact, SheetsCutApartAlongAnEdgeShareTheirSamplesThere)
   EXPECT_GE(on_edge.size(), 5u);
   for(const auto& point : on_edge)
     EXPECT_EQ(point.second, 3) << "at z = " << point.first.z();
+}
+
+namespace {
+
+std::string off_text(const Mesh& m)
+{
+  std::ostringstream out;
+  out.precision(17);
+  CGAL::IO::write_OFF(out, m);
+  return out.str();
+}
+
+// Remeshes `input` in batches of at most `batch_faces` faces at `target`, and checks the output
+// as `remesh_and_check()` does, with every vertex's place on the input.
+CR::Remeshing_report remesh_in_batches_and_check(const Mesh& input, double target, std::size_t batch_faces, Mesh& output,
+                                                 std::vector<CR::Surface_location>* places = nullptr)
+{
+  std::vector<CR::Surface_location> locations;
+  CR::Remeshing_statistics statistics;
+  const CR::Remeshing_report report = CR::remesh_conformal<CGAL::Sequential_tag>(
+    input, output,
+    CR::parameters::vertex_locations(
+      std::ref(locations),
+      CR::parameters::statistics(std::ref(statistics),
+                                 CR::parameters::batch_faces(batch_faces, CR::parameters::target_edge_length(target)))));
+  const CR::Mesh_check_report checks = CR::check_mesh(output);
+  EXPECT_TRUE(checks.is_manifold_surface()) << checks.summary();
+  EXPECT_FALSE(CR::internal::has_crossing_faces<CGAL::Sequential_tag>(output));
+  const CR::Remesh_verification verification = CR::verify_remesh(input, output, CR::parameters::vertex_locations(std::cref(locations)));
+  EXPECT_TRUE(verification.on_input_surface) << verification.summary();
+  EXPECT_TRUE(verification.self_intersection_free) << verification.summary();
+  EXPECT_EQ(statistics.patches.size(), report.number_of_patches);
+  EXPECT_GT(statistics.peak_resident_mb_gluing, 0.);
+  if(places != nullptr)
+    *places = std::move(locations);
+  return report;
+}
+
+} // namespace
+
+TEST(ComponentBatches, EachBatchIsRemeshedAsItsComponentsAlone)
+{
+  const double target = 0.1;
+  Mesh boxes;
+  for(int b = 0; b < 3; ++b)
+    add_box(boxes, 2. * b, 4 + b); // each box its own tessellation
+  boxes.collect_garbage();
+  // Batches of the first box's faces: one box each (the larger boxes exceed it alone).
+  Mesh batched;
+  std::vector<CR::Surface_location> locations;
+  const CR::Remeshing_report report = remesh_in_batches_and_check(boxes, target, 6 * 2 * 4 * 4, batched, &locations);
+  EXPECT_EQ(report.component_batches, 3u);
+  EXPECT_EQ(report.merged_batches, 0u);
+  EXPECT_EQ(CR::check_mesh(batched).components.size(), 3u);
+
+  // Each box copied out (as a batch is: in the input's order) and remeshed alone, the outputs
+  // joined in order: the same file.
+  std::vector<std::size_t> face_component;
+  const auto components = RM::component_batches(boxes, CGAL::parameters::default_values(), 1, face_component);
+  ASSERT_EQ(components.size(), 3u);
+  Mesh joined_alone;
+  for(const std::vector<std::size_t>& component : components)
+  {
+    const RM::Prepared_input alone = RM::copy_of_components(boxes, CGAL::parameters::default_values(), face_component, component);
+    Mesh remeshed;
+    CR::remesh_conformal<CGAL::Sequential_tag>(alone.mesh, remeshed, CR::parameters::target_edge_length(target));
+    CGAL::copy_face_graph(remeshed, joined_alone);
+  }
+  EXPECT_EQ(off_text(batched), off_text(joined_alone));
+
+  // Every vertex's place names a face of the input and barycentric coordinates from the source
+  // of its halfedge: they give the vertex back.
+  ASSERT_EQ(locations.size(), batched.number_of_vertices());
+  for(Mesh::Vertex_index v : batched.vertices())
+  {
+    const CR::Surface_location& at = locations[v];
+    ASSERT_LT(at.input_face, boxes.number_of_faces());
+    const Mesh::Halfedge_index h = boxes.halfedge(Mesh::Face_index(Mesh::size_type(at.input_face)));
+    const K::Point_3 a = boxes.point(boxes.source(h)), b = boxes.point(boxes.target(h)), c = boxes.point(boxes.target(boxes.next(h)));
+    const K::Point_3 p(at.coordinates[0] * a.x() + at.coordinates[1] * b.x() + at.coordinates[2] * c.x(),
+                       at.coordinates[0] * a.y() + at.coordinates[1] * b.y() + at.coordinates[2] * c.y(),
+                       at.coordinates[0] * a.z() + at.coordinates[1] * b.z() + at.coordinates[2] * c.z());
+    EXPECT_LT(std::sqrt(CGAL::squared_distance(p, batched.point(v))), 1e-9) << "vertex " << std::size_t(v);
+  }
+
+  // Two boxes in a batch.
+  Mesh two_batches;
+  const CR::Remeshing_report two = remesh_in_batches_and_check(boxes, target, 6 * 2 * (16 + 25), two_batches);
+  EXPECT_EQ(two.component_batches, 2u);
+  EXPECT_EQ(CR::check_mesh(two_batches).components.size(), 3u);
+
+  // In one piece (the default for an input this small): the same surface, meshed as a whole.
+  Mesh whole;
+  const CR::Remeshing_report one = remesh_in_batches_and_check(boxes, target, 0, whole);
+  EXPECT_EQ(one.component_batches, 1u);
+  EXPECT_EQ(one.number_of_patches, report.number_of_patches);
+}
+
+TEST(ComponentBatches, BatchesWhoseOutputsCrossAreRemeshedTogether)
+{
+  // A pipe inside another, a hundredth of the target apart: remeshed alone, the outer pipe's
+  // inner wall cuts inward by about a tenth of the target, through the inner pipe's outer wall.
+  const double target = 0.1;
+  Mesh pipes;
+  const Mesh inner = thick_pipe(0.1, 0.02, 0.5, 96, 10);
+  CGAL::copy_face_graph(inner, pipes);
+  CGAL::copy_face_graph(thick_pipe(0.12 + 0.01 * target, 0.02, 0.5, 96, 10), pipes);
+  ASSERT_TRUE(CR::check_mesh(pipes).is_valid()) << CR::check_mesh(pipes).summary();
+  Mesh output;
+  const CR::Remeshing_report report = remesh_in_batches_and_check(pipes, target, inner.number_of_faces(), output);
+  EXPECT_EQ(report.component_batches, 2u);
+  EXPECT_EQ(report.merged_batches, 1u) << "the two pipes' outputs cross when each is remeshed alone";
+  EXPECT_EQ(CR::check_mesh(output).components.size(), 2u);
 }

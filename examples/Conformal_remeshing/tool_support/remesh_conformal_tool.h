@@ -47,7 +47,8 @@ inline const char* const usage =
   "                        [--features-angle DEG] [--crease-angle DEG] [--patches FILE] [--cut-plane a,b,c,d]...\n"
   "                        [--save-patches DIR] [--sequential] [--report FILE.json] [--plots DIR] [--quiet]\n"
   "                        [--time-limit SECONDS] [--optimization-rounds N] [--lloyd-iterations N] [--chord-error E]\n"
-  "                        [--no-frontal] [--no-repair] [--deviation-map PREFIX]\n"
+  "                        [--no-frontal] [--no-repair] [--deviation-map PREFIX] [--batch-faces N]\n"
+  "                        [--no-fidelity]\n"
   "  IN, OUT                 mesh files (.off .obj .ply .stl); OUT is written atomically\n"
   "  --target-edge-length L  target edge length in the input's units\n"
   "  --relative-edge-length R  target edge length as a fraction of the bounding-box diagonal (default 0.01)\n"
@@ -79,6 +80,12 @@ inline const char* const usage =
   "                          edges and vertices and degenerate faces (by default polygons are triangulated, faces\n"
   "                          oriented, isolated vertices removed, borders along the same points stitched,\n"
   "                          non-manifold edges and vertices cut apart and zero-area faces removed first)\n"
+  "  --batch-faces N         an input of more than N faces and several components is remeshed a batch of whole\n"
+  "                          components of at most N faces at a time, to bound the memory (default 2000000; 0: in\n"
+  "                          one piece)\n"
+  "  --no-fidelity           skip the Hausdorff distances to and from the input (they sample every face of both:\n"
+  "                          on a car of 15M faces they take longer than the remeshing); the quality and the\n"
+  "                          self-intersection check stay\n"
   "Any orientable triangle mesh: closed or open, any genus, several components; vertices at the same point stay\n"
   "distinct.\n"
   "exit code: 0 success, 1 the input cannot be remeshed, 2 the tool could not run, 3 time limit exceeded\n";
@@ -90,8 +97,9 @@ struct Options
   double time_limit = std::numeric_limits<double>::infinity();
   double chord_error = 0.;
   int optimization_rounds = 5, lloyd_iterations = 0;
+  double batch_faces = 2000000.;
   std::vector<K::Plane_3> planes;
-  bool quiet = false, sequential = false, repair = true, frontal = true;
+  bool quiet = false, sequential = false, repair = true, frontal = true, fidelity = true;
   bool features_angle_given = false; // then no fallback without features (CR::parameters::features_fallback)
 };
 
@@ -179,6 +187,8 @@ inline bool parse(int argc, char** argv, Options& o)
       o.quiet = true;
     else if(arg == "--no-repair")
       o.repair = false;
+    else if(arg == "--no-fidelity")
+      o.fidelity = false;
     else if(arg == "--no-frontal")
       o.frontal = false;
     else if(arg == "--time-limit")
@@ -187,6 +197,8 @@ inline bool parse(int argc, char** argv, Options& o)
       ok = count(o.optimization_rounds);
     else if(arg == "--lloyd-iterations")
       ok = count(o.lloyd_iterations);
+    else if(arg == "--batch-faces")
+      ok = number(o.batch_faces) && o.batch_faces >= 0. && o.batch_faces == std::floor(o.batch_faces) && o.batch_faces < 1e18;
     else if(arg == "--chord-error")
       ok = number(o.chord_error) && o.chord_error >= 0.;
     else if(!arg.empty() && arg[0] != '-' && o.input.empty())
@@ -355,7 +367,8 @@ inline int run(int argc, char** argv, const CGAL::Conformal_remeshing::internal:
   {
     progress("remeshing " + std::to_string(input.number_of_faces()) + " faces");
     const auto limited = CR::parameters::patch_job_runner(runner, CR::parameters::repair_input(
-      o.repair, CR::parameters::statistics(std::ref(statistics), CR::parameters::maximum_running_time(remaining_time(), np))));
+      o.repair, CR::parameters::statistics(std::ref(statistics), CR::parameters::batch_faces(
+                                             std::size_t(o.batch_faces), CR::parameters::maximum_running_time(remaining_time(), np)))));
     report = o.sequential ? CR::remesh_conformal<CGAL::Sequential_tag>(input, output, limited)
                           : CR::remesh_conformal<CGAL::Parallel_if_available_tag>(input, output, limited);
   }
@@ -366,9 +379,16 @@ inline int run(int argc, char** argv, const CGAL::Conformal_remeshing::internal:
     std::cerr << tool_message(e.what()) << "\n";
     return 1;
   }
-  progress("measuring quality and fidelity");
+  // What the remeshing took, before the measures (which on a large input can take longer).
+  const double seconds_remeshed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double peak_mb_remeshed = peak_resident_megabytes();
+  progress(o.fidelity ? "measuring quality and fidelity" : "measuring quality");
   const CR::Mesh_quality_report before = CR::mesh_quality(input), after = CR::mesh_quality(output);
-  const CR::Reference_comparison fidelity = CR::compare_to_reference(output, input);
+  CR::Reference_comparison fidelity;
+  if(o.fidelity)
+    fidelity = CR::compare_to_reference(output, input);
+  else
+    fidelity.self_intersects = CR::internal::has_crossing_faces<CGAL::Parallel_if_available_tag>(output);
   CR::Face_deviations deviations;
   if(!o.deviation_map.empty())
   {
@@ -389,7 +409,7 @@ inline int run(int argc, char** argv, const CGAL::Conformal_remeshing::internal:
       json.key("parameters").begin_object().field("min_angle", o.min_angle).field("features_angle", o.features_angle).field("crease_angle", o.crease_angle)
           .field("optimization_rounds", o.optimization_rounds).field("lloyd_iterations", o.lloyd_iterations)
           .field("chord_error", o.chord_error).field("cut_planes", o.planes.size()).field("patches", o.patches)
-          .field("repair", o.repair).field("frontal_insertion", o.frontal).end_object();
+          .field("repair", o.repair).field("frontal_insertion", o.frontal).field("batch_faces", std::size_t(o.batch_faces)).end_object();
       json.key("input_repairs").begin_object().field("triangulated_polygons", repaired.triangulated_polygons)
           .field("triangles_from_polygons", repaired.triangles_from_polygons).field("reoriented_faces", repaired.reoriented_faces)
           .field("removed_isolated_vertices", repaired.removed_isolated_vertices)
@@ -417,7 +437,8 @@ inline int run(int argc, char** argv, const CGAL::Conformal_remeshing::internal:
           .field("plane_cuts", report.plane_cuts).field("patch_bisections", report.patch_bisections)
           .field("feature_edges", report.feature_edges).field("dangling_feature_edges", report.dangling_feature_edges)
           .field("boundary_curves", statistics.boundary_curves).field("refined_boundary_curves", report.refined_boundary_curves)
-          .field("split_diagonals", report.split_diagonals).end_object();
+          .field("split_diagonals", report.split_diagonals).field("component_batches", report.component_batches)
+          .field("merged_batches", report.merged_batches).end_object();
       // Where sheets of the input come within a target length of each other (measured with a
       // chord error; smallest_gap null: nowhere or not measured).
       json.key("proximity").begin_object().field("measured", !std::isnan(report.smallest_gap))
@@ -444,6 +465,8 @@ inline int run(int argc, char** argv, const CGAL::Conformal_remeshing::internal:
         json.value(seconds);
       json.end_array();
       json.field("peak_resident_mb", peak_resident_megabytes());
+      // From the start of the tool to the output remeshed, before the measures and the writing.
+      json.field("seconds_until_remeshed", seconds_remeshed).field("peak_resident_mb_until_remeshed", peak_mb_remeshed);
       json.key("peak_resident_mb_after").begin_object().field("segmentation", statistics.peak_resident_mb_segmentation)
           .field("flattening", statistics.peak_resident_mb_flattening).field("meshing", statistics.peak_resident_mb_meshing)
           .field("gluing", statistics.peak_resident_mb_gluing).end_object();
@@ -451,8 +474,12 @@ inline int run(int argc, char** argv, const CGAL::Conformal_remeshing::internal:
       tools::write_json(json, before);
       json.key("output_quality");
       tools::write_json(json, after);
+      json.field("output_self_intersects", fidelity.self_intersects);
       json.key("fidelity");
-      tools::write_json(json, fidelity);
+      if(o.fidelity)
+        tools::write_json(json, fidelity);
+      else
+        json.value(std::numeric_limits<double>::quiet_NaN()); // null: not measured
       if(!o.deviation_map.empty())
       {
         // Largest distance per face, in target lengths, and its histogram.
@@ -478,13 +505,19 @@ inline int run(int argc, char** argv, const CGAL::Conformal_remeshing::internal:
     return 2;
   }
 
+  const auto hausdorff_text = [](const CR::Reference_comparison& f) {
+    std::ostringstream text;
+    text << f.relative_distance_to_reference << " / " << f.relative_distance_from_reference << " x diagonal";
+    return text.str();
+  };
   std::cout << o.output << ": " << output.number_of_vertices() << " vertices, " << output.number_of_faces()
             << " faces (target edge length " << report.target_edge_length << ")\n"
             << "  minimum angle " << after.minimum_angle.min << " deg (input " << before.minimum_angle.min << "), "
             << 100. * after.share_with_minimum_angle_below(25.) << "% of triangles below 25 deg, mean skewness "
             << after.skewness.mean << " (input " << before.skewness.mean << ")\n"
-            << "  Hausdorff distance to / from the input: " << fidelity.relative_distance_to_reference << " / "
-            << fidelity.relative_distance_from_reference << " x diagonal; self-intersections: "
+            << "  Hausdorff distance to / from the input: "
+            << (o.fidelity ? hausdorff_text(fidelity) : std::string("not measured (--no-fidelity)"))
+            << "; self-intersections: "
             << (fidelity.self_intersects ? (report.input_crosses_itself ? "YES (the input crosses itself too)" : "YES") : "none")
             << "\n"
             << "  " << report.number_of_patches << " patches (" << report.plane_cuts << " plane cuts, "

@@ -107,6 +107,11 @@ struct Remeshing_report
   std::size_t self_intersection_refinements = 0;
   std::size_t refined_boundary_curves = 0; ///< times a boundary curve of a thin patch was sampled twice as densely
   std::size_t split_diagonals = 0; ///< times a patch split an edge between two samples that another patch also has
+  /// batches of whole components the input was remeshed in (named parameter `batch_faces`;
+  /// 1: in one piece); the other counts of the report are summed over the batches
+  std::size_t component_batches = 1;
+  /// batches remeshed again together with another because their outputs crossed each other
+  std::size_t merged_batches = 0;
   std::size_t output_vertices = 0;
   std::size_t output_faces = 0;
 

@@ -79,6 +79,7 @@ CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(lloyd_iterations)            // int
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(optimization_rounds)         // int
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(features_fallback)           // bool
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(repair_input)                // bool
+CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(batch_faces)                 // std::size_t, faces of a batch of components
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(progress)                    // void(const std::string&)
 // Output of `remesh_conformal()`, input of `verify_remesh()`: `std::vector<Surface_location>`,
 // the place on the input surface of every output vertex (an output parameter takes

@@ -35,6 +35,9 @@ struct Remeshing_options
   Sizing::Field sizing_field;      // empty: uniform
   int optimization_rounds = 5;
   bool features_fallback = true;
+  /// an input of more faces and several components is remeshed in batches of whole components
+  /// of at most this many faces (component_batches.h); 0: in one piece
+  std::size_t batch_faces = 2000000;
   /// the planar meshing's point placement and smoothing: by frontal insertion when it is on...
   Frontal_insertion frontal;
   Planar_smoothing smoothing;
@@ -64,6 +67,7 @@ Remeshing_options remeshing_options(const TriangleMesh& input, const NamedParame
   o.sizing_field = choose_parameter(get_parameter(np, internal_np::sizing_field), Sizing::Field());
   o.optimization_rounds = choose_parameter(get_parameter(np, internal_np::optimization_rounds), o.optimization_rounds);
   o.features_fallback = choose_parameter(get_parameter(np, internal_np::features_fallback), o.features_fallback);
+  o.batch_faces = choose_parameter(get_parameter(np, internal_np::batch_faces), o.batch_faces);
   o.patch_job_runner = choose_parameter(get_parameter(np, internal_np::patch_job_runner), Patch_job_runner());
   const bool frontal_on = choose_parameter(get_parameter(np, internal_np::frontal_insertion), true);
   const int lloyd_iterations = choose_parameter(get_parameter(np, internal_np::lloyd_iterations), 0);
