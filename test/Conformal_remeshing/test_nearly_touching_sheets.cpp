@@ -5,6 +5,7 @@
 // assembly of parts remeshed in batches of components gives each part the mesh it has alone, and
 // parts of different batches that come close are remeshed together.
 
+#include "off_text.h"
 #include "stage_tests.h"
 
 #include <CGAL/Conformal_remeshing/internal/crossing_faces.h>
@@ -119,22 +120,28 @@ Mesh thick_pipe(double r, double thickness, double length, int sectors, int rows
   return pipe;
 }
 
-// Remeshes `input` at `target`, with a chord error bound of a target (which bounds nothing on
-// these models, whose curvature radii are a target or more: only the gaps bound the chords), and
-// checks the output: a valid manifold, no crossing faces (contacts the input has are allowed),
-// every vertex on the input surface.
-CR::Remeshing_report remesh_and_check(const Mesh& input, double target, Mesh& output)
+// Checks the output of `input`: a valid manifold, no crossing faces (contacts the input has are
+// allowed), every vertex on the input surface at its place in `locations`.
+void check_output(const Mesh& input, const Mesh& output, const std::vector<CR::Surface_location>& locations)
 {
-  std::vector<CR::Surface_location> locations;
-  const CR::Remeshing_report report = CR::remesh_conformal(
-    input, output,
-    CR::parameters::vertex_locations(std::ref(locations), CR::parameters::maximum_chord_error(target, CR::parameters::target_edge_length(target))));
   const CR::Mesh_check_report checks = CR::check_mesh(output);
   EXPECT_TRUE(checks.is_manifold_surface()) << checks.summary();
   EXPECT_FALSE(CR::internal::has_crossing_faces<CGAL::Sequential_tag>(output));
   const CR::Remesh_verification verification = CR::verify_remesh(input, output, CR::parameters::vertex_locations(std::cref(locations)));
   EXPECT_TRUE(verification.on_input_surface) << verification.summary();
   EXPECT_TRUE(verification.self_intersection_free) << verification.summary();
+}
+
+// Remeshes `input` at `target`, with a chord error bound of a target (which bounds nothing on
+// these models, whose curvature radii are a target or more: only the gaps bound the chords), and
+// checks the output (`check_output()`).
+CR::Remeshing_report remesh_and_check(const Mesh& input, double target, Mesh& output)
+{
+  std::vector<CR::Surface_location> locations;
+  const CR::Remeshing_report report = CR::remesh_conformal(
+    input, output,
+    CR::parameters::vertex_locations(std::ref(locations), CR::parameters::maximum_chord_error(target, CR::parameters::target_edge_length(target))));
+  check_output(input, output, locations);
   EXPECT_GT(output.number_of_faces(), 0u);
   return report;
 }
@@ -269,16 +276,8 @@ TEST(SheetsInContact, SheetsCutApartAlongAnEdgeShareTheirSamplesThere)
 
 namespace {
 
-std::string off_text(const Mesh& m)
-{
-  std::ostringstream out;
-  out.precision(17);
-  CGAL::IO::write_OFF(out, m);
-  return out.str();
-}
-
 // Remeshes `input` in batches of at most `batch_faces` faces at `target`, and checks the output
-// as `remesh_and_check()` does, with every vertex's place on the input.
+// (`check_output()`), with every vertex's place on the input.
 CR::Remeshing_report remesh_in_batches_and_check(const Mesh& input, double target, std::size_t batch_faces, Mesh& output,
                                                  std::vector<CR::Surface_location>* places = nullptr)
 {
@@ -290,12 +289,7 @@ CR::Remeshing_report remesh_in_batches_and_check(const Mesh& input, double targe
       std::ref(locations),
       CR::parameters::statistics(std::ref(statistics),
                                  CR::parameters::batch_faces(batch_faces, CR::parameters::target_edge_length(target)))));
-  const CR::Mesh_check_report checks = CR::check_mesh(output);
-  EXPECT_TRUE(checks.is_manifold_surface()) << checks.summary();
-  EXPECT_FALSE(CR::internal::has_crossing_faces<CGAL::Sequential_tag>(output));
-  const CR::Remesh_verification verification = CR::verify_remesh(input, output, CR::parameters::vertex_locations(std::cref(locations)));
-  EXPECT_TRUE(verification.on_input_surface) << verification.summary();
-  EXPECT_TRUE(verification.self_intersection_free) << verification.summary();
+  check_output(input, output, locations);
   EXPECT_EQ(statistics.patches.size(), report.number_of_patches);
   EXPECT_GT(statistics.peak_resident_mb_gluing, 0.);
   if(places != nullptr)

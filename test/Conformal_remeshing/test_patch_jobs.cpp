@@ -2,6 +2,7 @@
 // meshing stage's reuse of the results of equal jobs, and jobs and results as bytes for other
 // processes (patch_job_io.h).
 
+#include "off_text.h"
 #include "stage_tests.h"
 
 #include <CGAL/Conformal_remeshing/internal/remeshing/patch_job_io.h>
@@ -164,15 +165,6 @@ TEST(PatchJobs, JobsDifferWhereALocalRefinementReachesTheirPatch)
 }
 
 namespace {
-
-// The output of remesh_conformal() as OFF text with every digit of its coordinates.
-std::string off_text(const Mesh& m)
-{
-  std::ostringstream out;
-  out.precision(17);
-  CGAL::IO::write_OFF(out, m);
-  return out.str();
-}
 
 // A runner that passes every job and result through bytes, as the MPI tool does between
 // processes: each job with its surface the first time its patch is seen, without it after.
