@@ -477,6 +477,7 @@ py::dict to_dict(const CR::Remeshing_statistics& s)
   d["seconds_meshing_stage"] = s.seconds_meshing_stage;
   d["seconds_gluing"] = s.seconds_gluing;
   d["seconds_proximity"] = s.seconds_proximity;
+  d["seconds_surface_distance"] = s.seconds_surface_distance;
   d["seconds_ricci_flow"] = s.seconds_ricci_flow;
   d["seconds_planar_meshing"] = s.seconds_planar_meshing;
   d["seconds_optimization"] = s.seconds_optimization;
@@ -504,6 +505,15 @@ py::dict to_dict(const CR::Remeshing_report& r)
   d["smallest_gap_point"] = py::make_tuple(r.smallest_gap_point[0], r.smallest_gap_point[1], r.smallest_gap_point[2]);
   d["gap_bounded_vertices"] = r.gap_bounded_vertices;
   d["self_intersection_refinements"] = r.self_intersection_refinements;
+  d["surface_distance_bound"] = r.surface_distance_bound;
+  d["surface_distance_refinements"] = r.surface_distance_refinements;
+  d["places_beyond_surface_distance"] = r.places_beyond_surface_distance;
+  d["surface_distance_rounds_dropped"] = r.surface_distance_rounds_dropped;
+  d["largest_surface_distance"] = r.largest_surface_distance;
+  d["output_faces_beyond_surface_distance"] = r.output_faces_beyond_surface_distance;
+  d["input_vertices_beyond_surface_distance"] = r.input_vertices_beyond_surface_distance;
+  d["input_edges_beyond_surface_distance"] = r.input_edges_beyond_surface_distance;
+  d["input_faces_beyond_surface_distance"] = r.input_faces_beyond_surface_distance;
   d["refined_boundary_curves"] = r.refined_boundary_curves;
   d["split_diagonals"] = r.split_diagonals;
   d["output_vertices"] = r.output_vertices;
@@ -735,7 +745,8 @@ void require_callable(const py::object& f, const char* name)
 py::tuple remesh(const py::object& V, const py::object& F, std::optional<double> target_edge_length,
                  double relative_edge_length, double minimum_angle, double features_angle, double crease_angle,
                  bool features_fallback,
-                 std::optional<double> chord_error, const py::object& sizing, std::optional<double> time_limit,
+                 std::optional<double> chord_error, std::optional<double> surface_distance, const py::object& sizing,
+                 std::optional<double> time_limit,
                  const py::object& progress, bool repair, int optimization_rounds, int lloyd_iterations,
                  bool frontal_insertion)
 {
@@ -794,13 +805,15 @@ py::tuple remesh(const py::object& V, const py::object& F, std::optional<double>
                   P::crease_angle(crease_angle,
                   P::features_fallback(features_fallback,
                   P::maximum_chord_error(chord_error ? *chord_error : 0.,
+                  P::maximum_surface_distance(surface_distance ? *surface_distance
+                                                               : CR::internal::remeshing::default_surface_distance * target,
                   P::sizing_field(sizing_field,
                   P::maximum_running_time(seconds_or_unlimited(time_limit),
                   P::progress(progress_callback,
                   P::repair_input(repair,
                   P::optimization_rounds(optimization_rounds,
                   P::lloyd_iterations(lloyd_iterations,
-                  P::frontal_insertion(frontal_insertion))))))))))))));
+                  P::frontal_insertion(frontal_insertion)))))))))))))));
   struct Result
   {
     Mesh output;
@@ -927,11 +940,13 @@ and raises KeyboardInterrupt.)doc";
 
   m.def("remesh", &remesh, py::arg("V"), py::arg("F"), py::kw_only(), py::arg("target_edge_length") = py::none(),
         py::arg("relative_edge_length") = 0.01, py::arg("minimum_angle") = 28., py::arg("features_angle") = 60.,
-        py::arg("crease_angle") = 40., py::arg("features_fallback") = true, py::arg("chord_error") = py::none(), py::arg("sizing") = py::none(),
+        py::arg("crease_angle") = 40., py::arg("features_fallback") = true, py::arg("chord_error") = py::none(),
+        py::arg("surface_distance") = py::none(), py::arg("sizing") = py::none(),
         py::arg("time_limit") = py::none(), py::arg("progress") = py::none(), py::arg("repair") = true,
         py::arg("optimization_rounds") = 5, py::arg("lloyd_iterations") = 0, py::arg("frontal_insertion") = true,
         R"doc(remesh(V, F, *, target_edge_length=None, relative_edge_length=0.01, minimum_angle=28.0,
-       features_angle=60.0, crease_angle=40.0, features_fallback=True, chord_error=None, sizing=None,
+       features_angle=60.0, crease_angle=40.0, features_fallback=True, chord_error=None,
+       surface_distance=None, sizing=None,
        time_limit=None,
        progress=None, repair=True, optimization_rounds=5, lloyd_iterations=0,
        frontal_insertion=True) -> (V2, F2, report)
@@ -948,6 +963,10 @@ crease_angle: creases above this angle (and not above features_angle) are featur
     they form chains at least 5 target lengths long, from sharp features to sharp features, with
     no parallel crease within one (a CAD part's edges, such as a chamfer's); 0: none.
 chord_error: curvature-adaptive sizing: largest deviation of a chord from the surface.
+surface_distance: a bound on the distance between the output and the input, both ways (units
+    of V; default a quarter of the target edge length, 0: none): where they stand farther apart
+    after gluing, the surface is meshed again there with shorter edges, in up to four rounds; report['surface_distance_refinements'] and the
+    report's *_beyond_surface_distance counts say what was done and what is left.
 sizing: a callable taking a k x 3 float64 array of points on the surface and returning k
     edge lengths; the library asks for one point at a time (k = 1). The target edge length
     stays the upper bound, and lengths below 1/16 of it count as 1/16.

@@ -7,14 +7,15 @@
 // meshing stage's speed (the goal is 100k output vertices per second for meshing plus
 // pull-back), and where its time goes, phase by phase. With --save-meshes DIR, also writes
 // each model's two outputs as OFF files (and the input of the generated models) into DIR. With
-// --lloyd N, remesh_conformal() runs with lloyd_iterations(N) (CGAL's Lloyd smoothing in the plane).
+// --lloyd N, remesh_conformal() runs with lloyd_iterations(N) (CGAL's Lloyd smoothing in the plane);
+// with --surface-distance R, with a surface-distance bound of R target lengths.
 // With --peers, also the peers named (isotropic_remeshing(), Gmsh, MeshLab; support/external_peers.h)
 // at the same target length and, with --same-size, at the target length that gives each peer's
 // output the number of vertices of ours (within 5%); a peer that fails, times out or is not
 // installed is recorded as such, in a fourth table and in each model's "peers" record.
 //
-//   remeshing_benchmark OUT.json [--relative R] [--lloyd N] [--rounds N] [--save-meshes DIR]
-//                      [--peers LIST] [--same-size] [--peer-timeout S] [--no-generated] [MESH ...]
+//   remeshing_benchmark OUT.json [--relative R] [--lloyd N] [--rounds N] [--surface-distance R]
+//                      [--save-meshes DIR] [--peers LIST] [--same-size] [--peer-timeout S] [--no-generated] [MESH ...]
 //
 // Exit code: 0, 1 when a model is refused, 2 for bad arguments or input, or an output that cannot
 // be written.
@@ -35,6 +36,7 @@
 #include "timing.h"
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
@@ -108,11 +110,14 @@ void write_json(std::ostream& out, const Measure& m)
 
 std::string usage()
 {
-  return "usage: remeshing_benchmark OUT.json [--relative R] [--lloyd N] [--rounds N] [--save-meshes DIR]\n"
+  return "usage: remeshing_benchmark OUT.json [--relative R] [--lloyd N] [--rounds N] [--surface-distance R]\n"
+         "                           [--save-meshes DIR]\n"
          "                           [--peers LIST] [--same-size] [--peer-timeout S] [--no-generated] [MESH ...]\n"
          "  --relative R        target edge length over the bounding-box diagonal, 0 < R < 1 (default 0.01)\n"
          "  --lloyd N           remesh_conformal() with N Lloyd iterations in the plane, 0 to 1000 (default 0)\n"
          "  --rounds N          remesh_conformal() with N optimization rounds on the surface, 0 to 100 (default 5)\n"
+         "  --surface-distance R  remesh_conformal() with a surface-distance bound of R times the target edge length,\n"
+         "                      R >= 0 (default 0.25, the library's; 0: none)\n"
          "  --save-meshes DIR   write DIR/<model>_conformal.off and DIR/<model>_isotropic.off for each model,\n"
          "                      and DIR/<model>_input.off for the generated ones; DIR is created if missing\n"
          "  --peers LIST        the peers compared in the \"peers\" records, of isotropic, gmsh and meshlab, comma-separated\n"
@@ -397,6 +402,7 @@ int main(int argc, char** argv)
   double relative = 0.01;
   int lloyd = 0;
   int rounds = 5; // remesh_conformal()'s default
+  double surface_distance = 0.25; // times the target; remesh_conformal()'s default
   std::string mesh_directory; // empty: no --save-meshes
   Peer_options peer_options;
   bool with_generated = true;
@@ -428,6 +434,15 @@ int main(int argc, char** argv)
           throw std::invalid_argument(arg + ": must be a whole number from 0 to " + std::to_string(largest) + ": '" + std::string(argv[i]) + "'");
         return int(n);
       };
+      if(arg == "--surface-distance")
+      {
+        if(i + 1 >= argc)
+          throw std::invalid_argument("--surface-distance: missing value");
+        surface_distance = bm::parse_double(arg, argv[++i]);
+        if(!(surface_distance >= 0.) || !std::isfinite(surface_distance))
+          throw std::invalid_argument("--surface-distance: must be 0 or more: '" + std::string(argv[i]) + "'");
+        continue;
+      }
       if(arg == "--lloyd")
       {
         lloyd = whole_number(1000);
@@ -575,11 +590,15 @@ int main(int argc, char** argv)
     double ours_seconds = 0.;
     std::vector<double> stage_seconds, planar_seconds, optimization_seconds, pull_back_seconds; // per run
     std::vector<CR::Meshing_phase_seconds> phase_seconds;
+    const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(input);
+    const double bound = surface_distance * relative
+                         * std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin())
+                                     + CGAL::square(box.zmax() - box.zmin()));
     try
     {
       ours_seconds = bm::median_seconds([&] {
         report = CR::remesh_conformal(input, ours,
-                                      CR::parameters::statistics(std::ref(statistics), CR::parameters::lloyd_iterations(lloyd, CR::parameters::optimization_rounds(rounds, CR::parameters::relative_target_edge_length(relative)))));
+                                      CR::parameters::statistics(std::ref(statistics), CR::parameters::maximum_surface_distance(bound, CR::parameters::lloyd_iterations(lloyd, CR::parameters::optimization_rounds(rounds, CR::parameters::relative_target_edge_length(relative))))));
         stage_seconds.push_back(statistics.seconds_meshing_stage);
         planar_seconds.push_back(statistics.seconds_planar_meshing);
         optimization_seconds.push_back(statistics.seconds_optimization);
@@ -623,6 +642,7 @@ int main(int argc, char** argv)
               << a.hausdorff_to / b.hausdorff_to << std::setw(10) << a.hausdorff_from / b.hausdorff_from << "\n";
     json << (k ? ",\n" : "") << "  {\"model\": " << json_string(model.name) << ", \"target_edge_length\": " << h
          << ", \"lloyd_iterations\": " << lloyd << ", \"optimization_rounds\": " << rounds
+         << ", \"surface_distance\": " << surface_distance << ", \"surface_distance_refinements\": " << report.surface_distance_refinements
          << ", \"patches\": " << report.number_of_patches << ", \"stage_seconds\": {\"segmentation\": "
          << statistics.seconds_segmentation << ", \"flattening\": " << statistics.seconds_flattening
          << ", \"meshing_and_pull_back\": " << statistics.seconds_meshing_stage << ", \"gluing\": " << statistics.seconds_gluing

@@ -6,7 +6,10 @@
 //  - `vertex_locations`: the input face and barycentric coordinates of every output vertex,
 //    which `verify_remesh()` then checks with exact predicates together with the topology, the
 //    distance to the input and self-intersections;
-//  - `statistics`: the timings and counters of the stages.
+//  - `statistics`: the timings and counters of the stages;
+//  - `maximum_surface_distance`: a bound, here a tenth of the target edge length, on the distance
+//    between the output and the input both ways; where the output strays farther, the surface
+//    is meshed again there with shorter edges, and the report says how far it still is.
 //
 // Usage: remesh_and_verify [input_mesh [output.off]] (default input: data/perforated_plate.off).
 // Exit code 0 when the output is verified, 1 when the input cannot be remeshed or the output
@@ -17,9 +20,11 @@
 #include <CGAL/remesh_conformal.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polygon_mesh_processing/bbox.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
+#include <cmath>
 #include <functional>
 #include <iostream>
 #include <string>
@@ -48,15 +53,26 @@ int main(int argc, char** argv)
       std::cerr << "Error: '" << input_file << "' cannot be remeshed: " << checks.summary() << "\n";
       return 1;
     }
+    const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(input);
+    const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin())
+                                      + CGAL::square(box.zmax() - box.zmin()));
+    const double target = 0.02 * diagonal;
     const CR::Remeshing_report report = CR::remesh_conformal(
       input, output,
-      CR::parameters::relative_target_edge_length(
-        0.02, CR::parameters::vertex_locations(std::ref(locations), CR::parameters::statistics(std::ref(statistics))))
+      CR::parameters::target_edge_length(
+        target, CR::parameters::maximum_surface_distance(
+                  0.1 * target, CR::parameters::vertex_locations(std::ref(locations), CR::parameters::statistics(std::ref(statistics)))))
         .maximum_running_time(60.)); // CGAL's parameters chain as members
     std::cout << "remeshed into " << report.output_vertices << " vertices and " << report.output_faces << " faces, "
               << report.number_of_patches << " patches; target edge length " << report.target_edge_length << "\n"
               << "stages: segmentation " << statistics.seconds_segmentation << " s, flattening " << statistics.seconds_flattening
-              << " s, meshing " << statistics.seconds_meshing_stage << " s, gluing " << statistics.seconds_gluing << " s\n";
+              << " s, meshing " << statistics.seconds_meshing_stage << " s, gluing " << statistics.seconds_gluing << " s\n"
+              << "surface distance: at most " << report.largest_surface_distance << " found (bound "
+              << report.surface_distance_bound << ", " << report.surface_distance_refinements << " rounds of meshing again near "
+              << report.places_beyond_surface_distance << " places); still beyond it: "
+              << report.output_faces_beyond_surface_distance + report.input_vertices_beyond_surface_distance
+                   + report.input_edges_beyond_surface_distance + report.input_faces_beyond_surface_distance
+              << " elements\n";
   }
   catch(const CR::Error& e)
   {

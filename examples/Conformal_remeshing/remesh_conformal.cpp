@@ -4,7 +4,8 @@
 //                    [--features-angle DEG] [--crease-angle DEG] [--patches FILE] [--cut-plane a,b,c,d]...
 //                    [--save-patches DIR] [--sequential] [--report FILE.json] [--plots DIR] [--quiet]
 //                    [--time-limit SECONDS] [--optimization-rounds N] [--lloyd-iterations N] [--chord-error E]
-//                    [--no-frontal] [--no-repair] [--deviation-map PREFIX]
+//                    [--no-frontal] [--no-repair] [--deviation-map PREFIX] [--batch-faces N]
+//                    [--no-fidelity] [--surface-distance D | --relative-surface-distance R]
 //
 // The input's polygons are triangulated, its faces oriented consistently, its isolated vertices
 // removed and its borders along the same points stitched first (CR::Input_repairs), unless

@@ -77,6 +77,11 @@ namespace Conformal_remeshing {
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{`0`: none}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{maximum_surface_distance}
+///     \cgalParamDescription{a bound on the distance between the output and the input, both ways (input units): after gluing, where a face of the output stands farther from the input than this, or a point of the input (a vertex, or on an edge or a face) stands farther from the output (a crease under the features angle cut off, a small feature rounded away), the surface is meshed again with edges of half the target there (along the whole of an input edge that stands too far), graded back to the target by half the distance, and halved again where it still stands too far, in at most four rounds (down to 1/16 of the target); the meshes of the patches those places do not reach are kept, and a round that brings the output no closer is dropped. The distances are measured at samples (edge midpoints, face centroids, input vertices, and a grid a quarter target apart near the bound), not everywhere. What is still farther after that is counted in `Remeshing_report::output_faces_beyond_surface_distance`, `input_vertices_beyond_surface_distance`, `input_edges_beyond_surface_distance` and `input_faces_beyond_surface_distance`}
+///     \cgalParamType{`double`}
+///     \cgalParamDefault{a quarter of the target edge length (`0`: none)}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{minimum_angle}
 ///     \cgalParamDescription{in degrees, in (0, 34]: no flip or move of the optimization on the surface creates a smaller angle, and its angle passes raise the triangles below the larger of this and 30 degrees; the planar Delaunay refinement's shape bound is the smaller of this and 20.7 degrees, the bound for which refinement provably ends}
 ///     \cgalParamType{`double`}

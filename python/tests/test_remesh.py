@@ -105,6 +105,29 @@ def test_chord_error_refines_where_the_surface_bends(plate):
     assert len(adaptive[0]) > 1.2 * len(coarse[0])
 
 
+def test_surface_distance_is_passed_on_and_reported(plate):
+    """The default bound is a quarter of the target; a bound the output breaks is met by meshing
+    again finer there, which adds vertices; 0 turns the check off."""
+    V, F = plate
+    _, _, default = crm.remesh(V, F, relative_edge_length=0.04)
+    h = default["target_edge_length"]
+    assert default["surface_distance_bound"] == pytest.approx(0.25 * h, rel=1e-12)
+    assert 0.0 < default["largest_surface_distance"]
+    _, _, off = crm.remesh(V, F, relative_edge_length=0.04, surface_distance=0.0)
+    assert off["surface_distance_bound"] == 0.0 and off["largest_surface_distance"] == 0.0
+    assert off["surface_distance_refinements"] == 0
+    tight = 0.5 * default["largest_surface_distance"]
+    V2, _, bounded = crm.remesh(V, F, relative_edge_length=0.04, surface_distance=tight)
+    assert bounded["surface_distance_refinements"] >= 1
+    assert bounded["places_beyond_surface_distance"] > 0
+    assert bounded["largest_surface_distance"] < default["largest_surface_distance"]
+    assert len(V2) > default["output_vertices"]
+    for key in ("output_faces_beyond_surface_distance", "input_vertices_beyond_surface_distance",
+                "input_edges_beyond_surface_distance", "input_faces_beyond_surface_distance"):
+        assert key in bounded, key
+    assert "seconds_surface_distance" in bounded["statistics"]
+
+
 def test_features_angle_is_passed_on(plate, remeshed_plate):
     """features_angle=0: no sharp feature, the segmentation cuts by planes instead."""
     _, _, without = crm.remesh(*plate, relative_edge_length=0.04, features_angle=0.0)
@@ -120,6 +143,8 @@ def test_parameters_out_of_range_raise_value_error():
         crm.remesh(V, F, target_edge_length=-1.0)
     with pytest.raises(ValueError, match="maximum running time"):
         crm.remesh(V, F, time_limit=-1.0)
+    with pytest.raises(ValueError, match="surface distance"):
+        crm.remesh(V, F, surface_distance=-1.0)
 
 
 def test_repairs_are_reported():

@@ -207,3 +207,82 @@ TEST(MovesAfterGluing, AStarRelaxesOnTheSurfaceButDoesNotCutACreaseOff)
   const P off_roof = relax(1., 0.3, 0., 0.);
   EXPECT_LT(off_roof.x(), 0.1) << off_roof; // measured: 0.04
 }
+
+TEST(SurfaceDistance, PlacesBeyondTheBoundBothWays)
+{
+  // The input: a 2 x 1 rectangle folded along x = 1 into a ridge of height d (4 triangles). The
+  // output: the flat rectangle under it (2 triangles). The ridge's vertices stand d from the
+  // output, the output's face centroids about 2d/3 from the input.
+  typedef K::Point_3 P;
+  const double d = 0.1;
+  Mesh ridge, flat;
+  const auto r00 = ridge.add_vertex(P(0, 0, 0)), r10 = ridge.add_vertex(P(1, 0, d)), r20 = ridge.add_vertex(P(2, 0, 0));
+  const auto r01 = ridge.add_vertex(P(0, 1, 0)), r11 = ridge.add_vertex(P(1, 1, d)), r21 = ridge.add_vertex(P(2, 1, 0));
+  ridge.add_face(r00, r10, r11);
+  ridge.add_face(r00, r11, r01);
+  ridge.add_face(r10, r20, r21);
+  ridge.add_face(r10, r21, r11);
+  const auto f00 = flat.add_vertex(P(0, 0, 0)), f20 = flat.add_vertex(P(2, 0, 0));
+  const auto f21 = flat.add_vertex(P(2, 1, 0)), f01 = flat.add_vertex(P(0, 1, 0));
+  flat.add_face(f00, f20, f21);
+  flat.add_face(f00, f21, f01);
+  const CR::internal::Distance_to_surface to_ridge(ridge);
+
+  const RM::Places_beyond_distance far = RM::places_beyond_distance<CGAL::Sequential_tag>(ridge, to_ridge, flat, 0.06, 0.25);
+  EXPECT_NEAR(far.largest, d, 1e-12);
+  EXPECT_EQ(far.output_faces, 2u);
+  EXPECT_EQ(far.input_vertices, 2u);  // the ridge's
+  EXPECT_EQ(far.input_faces, 4u);     // each has a corner on the ridge
+  EXPECT_GE(far.input_edges, 3u);     // the ridge and the sides along the x axis, at least
+  // The places: where the distance exceeds 0.06 (within 0.4 of the ridge), and along the whole of
+  // each input edge beyond the bound, so all along the ridge.
+  ASSERT_FALSE(far.places.empty());
+  const auto on_an_edge_to_the_ridge = [&](const P& p) {
+    for(const P& r : {P(1, 0, d), P(1, 1, d)})
+      for(const P& q : {P(0, 0, 0), P(2, 0, 0), P(0, 1, 0), P(2, 1, 0), P(1, 0, d), P(1, 1, d)})
+        if(q != r && CGAL::squared_distance(K::Segment_3(r, q), p) < 1e-20)
+          return true;
+    return false;
+  };
+  for(const P& p : far.places)
+    EXPECT_TRUE(std::abs(p.x() - 1.) < 0.4 || on_an_edge_to_the_ridge(p)) << p;
+  // Thinned to one per cell a quarter wide, they cover the ridge from end to end.
+  for(double y = 0.; y <= 1.; y += 0.125)
+  {
+    double nearest = 1.;
+    for(const P& p : far.places)
+      nearest = (std::min)(nearest, CGAL::squared_distance(p, P(1, y, d)));
+    EXPECT_LT(nearest, 0.75 * 0.25 * 0.25) << y; // within a cell's diagonal
+  }
+  for(std::size_t i = 0; i < far.places.size(); ++i)
+    for(std::size_t j = 0; j < i; ++j)
+      EXPECT_GT(CGAL::squared_distance(far.places[i], far.places[j]), 0.) << "thinned to one per cell";
+
+  // A bound above the ridge's height: nothing beyond, the largest distance still found.
+  const RM::Places_beyond_distance none = RM::places_beyond_distance<CGAL::Sequential_tag>(ridge, to_ridge, flat, 0.11, 0.25);
+  EXPECT_TRUE(none.places.empty());
+  EXPECT_EQ(none.output_faces + none.input_vertices + none.input_edges + none.input_faces, 0u);
+  EXPECT_NEAR(none.largest, d, 1e-12);
+
+  // The same surface both ways: nothing beyond any bound.
+  const CR::internal::Distance_to_surface to_flat(flat);
+  const RM::Places_beyond_distance same = RM::places_beyond_distance<CGAL::Sequential_tag>(flat, to_flat, flat, 1e-9, 0.25);
+  EXPECT_TRUE(same.places.empty());
+  EXPECT_LT(same.largest, 1e-12);
+}
+
+TEST(SurfaceDistance, PlacesStillTooFarAreRefinedFurther)
+{
+  // A place near an earlier one gets half its size; a place far from all earlier ones, half the
+  // target.
+  typedef K::Point_3 P;
+  RM::Distance_refinement refinement(1., 0.5);
+  refinement.add({P(0, 0, 0), P(10, 0, 0)});
+  refinement.add({P(0.3, 0, 0), P(5, 0, 0)});
+  refinement.add({P(0.1, 0, 0)});
+  const RM::Local_refinement& places = refinement.places();
+  ASSERT_EQ(places.points.size(), 5u);
+  EXPECT_EQ(places.sizes, (std::vector<double>{0.5, 0.5, 0.25, 0.5, 0.125}));
+  EXPECT_DOUBLE_EQ(places.at(P(0.1, 0, 0)), 0.125);
+  EXPECT_DOUBLE_EQ(places.at(P(10, 2, 0)), 0.5 + 0.5 * 2.);
+}

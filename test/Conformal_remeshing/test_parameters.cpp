@@ -109,6 +109,8 @@ TEST(Parameters, SizingFieldAndChordError)
   EXPECT_GT(adaptive.number_of_vertices(), 1.5 * uniform.number_of_vertices());
   test_support::expect_error([&] { remeshed(input, CR::parameters::maximum_chord_error(-1.)); }, CR::Error_code::INVALID_INPUT,
                              {"chord error"});
+  test_support::expect_error([&] { remeshed(input, CR::parameters::maximum_surface_distance(-1.)); }, CR::Error_code::INVALID_INPUT,
+                             {"surface distance"});
 }
 
 TEST(Parameters, AnglesAndPlanarMeshing)

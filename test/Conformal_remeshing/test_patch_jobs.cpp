@@ -140,9 +140,8 @@ TEST(PatchJobs, JobsDifferWhereALocalRefinementReachesTheirPatch)
   };
   ASSERT_GE(plate.surface.patches.size(), 2u);
   RM::Local_refinement one, two;
-  one.size = two.size = h / 4.;
-  one.points = {place_in(0)};
-  two.points = {place_in(0), place_in(plate.surface.patches.size() - 1)};
+  one.add({place_in(0)}, h / 4.);
+  two.add({place_in(0), place_in(plate.surface.patches.size() - 1)}, h / 4.);
   const RM::Sizing first(plate.surface.segmentation, h, RM::Sizing::Field(), 0., one);
   const RM::Sizing second(plate.surface.segmentation, h, RM::Sizing::Field(), 0., two);
   std::size_t reached = 0, unreached = 0;

@@ -164,7 +164,9 @@ TEST(RemeshAnyTopology, OpenSheetWithHoles)
   // The smallest angle is 16.2 degrees (measured; the bar of 20 is not met here): a triangle at the
   // rim, lifted onto the creases between bent slivers (the surface is not smooth at its scale);
   // the optimization lifted it to 17.7 before its moves were kept from stretching edges.
-  check_remeshing(sheet, 16., CR::parameters::features_angle(0.));
+  // Without the surface-distance bound: it would mesh the creases between bent slivers finer,
+  // which the edge-length bar does not allow for.
+  check_remeshing(sheet, 16., CR::parameters::maximum_surface_distance(0., CR::parameters::features_angle(0.)));
 }
 
 TEST(RemeshAnyTopology, BentCadSheetWithDefaultFeatures)
@@ -364,6 +366,55 @@ TEST(RemeshAnyTopology, AChamfersEdgesAreFollowedBelowTheFeaturesAngle)
   EXPECT_FALSE(kept.self_intersects);
 }
 
+TEST(RemeshAnyTopology, TheSurfaceDistanceBoundMeshesACutChamferAgainFiner)
+{
+  // Without the chamfer's creases as features (crease_angle 0) the output cuts its edges; with a
+  // bound of a tenth of the target, the places beyond it are meshed again with shorter edges
+  // until the output stays within it both ways, which the random samples of
+  // compare_to_reference() confirm, with edges shortened only near the chamfer.
+  const Mesh box = chamfered_box(3.);
+  Mesh cut, bounded;
+  const CR::Remeshing_report without =
+    CGAL::remesh_conformal(box, cut, CR::parameters::maximum_surface_distance(0., CR::parameters::crease_angle(0.)));
+  const double h = without.target_edge_length, bound = 0.1 * h;
+  EXPECT_EQ(without.surface_distance_bound, 0.);
+  EXPECT_EQ(without.surface_distance_refinements, 0u);
+  EXPECT_EQ(without.largest_surface_distance, 0.);
+  Mesh by_default;
+  EXPECT_EQ(CGAL::remesh_conformal(box, by_default).surface_distance_bound, 0.25 * h);
+  const double d = diagonal(box);
+  ASSERT_GT(CR::compare_to_reference(cut, box).relative_hausdorff_distance() * d, 1.5 * bound) << "the case this test is about is gone";
+
+  // The places along the chamfer's edges get shorter edges: 94% of the edges within [0.7, 1.4]
+  // times the target (measured).
+  const CR::Remeshing_report with = check_remeshing(box, remeshing_checks::Quality_bars(20.).edge_share_above(0.9),
+                                                    CR::parameters::maximum_surface_distance(bound, CR::parameters::crease_angle(0.)),
+                                                    &bounded);
+  EXPECT_EQ(with.surface_distance_bound, bound);
+  EXPECT_GE(with.surface_distance_refinements, 1u);
+  EXPECT_GT(with.places_beyond_surface_distance, 0u);
+  EXPECT_EQ(with.output_faces_beyond_surface_distance, 0u);
+  EXPECT_EQ(with.input_vertices_beyond_surface_distance, 0u);
+  EXPECT_EQ(with.input_edges_beyond_surface_distance, 0u);
+  EXPECT_EQ(with.input_faces_beyond_surface_distance, 0u);
+  EXPECT_LE(with.largest_surface_distance, bound);
+  const CR::Reference_comparison measured = CR::compare_to_reference(bounded, box);
+  EXPECT_LE(measured.relative_hausdorff_distance() * d, 1.1 * bound); // random samples between the check's
+  EXPECT_LT(bounded.number_of_vertices(), 1.5 * cut.number_of_vertices());
+  EXPECT_GT(bounded.number_of_vertices(), cut.number_of_vertices());
+
+  // A bound the output already keeps is checked and changes nothing.
+  Mesh unchanged;
+  const double loose = 2. * CR::compare_to_reference(cut, box).relative_hausdorff_distance() * d;
+  const CR::Remeshing_report kept = CGAL::remesh_conformal(box, unchanged, CR::parameters::maximum_surface_distance(loose, CR::parameters::crease_angle(0.)));
+  EXPECT_EQ(kept.surface_distance_refinements, 0u);
+  EXPECT_GT(kept.largest_surface_distance, bound);
+  EXPECT_LE(kept.largest_surface_distance, loose);
+  ASSERT_EQ(unchanged.number_of_vertices(), cut.number_of_vertices());
+  for(Mesh::Vertex_index v : cut.vertices())
+    EXPECT_EQ(unchanged.point(v), cut.point(v));
+}
+
 TEST(RemeshAnyTopology, CreasesCloserThanATargetLengthStayInsideTheirPatch)
 {
   // A chamfer a tenth of a target length wide (the facets of a coarse fillet): its two creases
@@ -560,6 +611,8 @@ TEST(RemeshAnyTopology, CgalJointGenusTwo)
 TEST(RemeshAnyTopology, PlaneCutThroughThePlate)
 {
   // The paper's cut of its brake: the mid-plane makes two genus-0 halves of a genus-3 plate.
+  // Without features and without the surface-distance bound, which would mesh the plate's cut
+  // sharp edges finer (the edge-length bar does not allow for it).
   Mesh plate, output;
   bm::Perforated_plate_parameters p = plate_with_holes(3);
   bm::make_perforated_plate(plate, p);
@@ -568,7 +621,7 @@ TEST(RemeshAnyTopology, PlaneCutThroughThePlate)
   const CR::Remeshing_report report =
     check_remeshing(plate,
                     20.,
-                    CR::parameters::statistics(std::ref(statistics), CR::parameters::cut_planes(planes, CR::parameters::features_angle(0.))),
+                    CR::parameters::statistics(std::ref(statistics), CR::parameters::cut_planes(planes, CR::parameters::maximum_surface_distance(0., CR::parameters::features_angle(0.)))),
                     &output);
   EXPECT_EQ(report.plane_cuts, 1u);
   EXPECT_EQ(report.number_of_patches, 2u);

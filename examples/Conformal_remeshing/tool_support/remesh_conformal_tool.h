@@ -48,7 +48,7 @@ inline const char* const usage =
   "                        [--save-patches DIR] [--sequential] [--report FILE.json] [--plots DIR] [--quiet]\n"
   "                        [--time-limit SECONDS] [--optimization-rounds N] [--lloyd-iterations N] [--chord-error E]\n"
   "                        [--no-frontal] [--no-repair] [--deviation-map PREFIX] [--batch-faces N]\n"
-  "                        [--no-fidelity]\n"
+  "                        [--no-fidelity] [--surface-distance D | --relative-surface-distance R]\n"
   "  IN, OUT                 mesh files (.off .obj .ply .stl); OUT is written atomically\n"
   "  --target-edge-length L  target edge length in the input's units\n"
   "  --relative-edge-length R  target edge length as a fraction of the bounding-box diagonal (default 0.01)\n"
@@ -76,6 +76,11 @@ inline const char* const usage =
   "                          default frontal insertion places them in rows of nearly equilateral triangles first)\n"
   "  --chord-error E         shorter edges where the surface bends, so that chords deviate from it by at most E\n"
   "                          (input units; down to 1/16 of the target length; default 0: uniform)\n"
+  "  --surface-distance D    mesh again with shorter edges (half the target there, halved again where it still is, down\n"
+  "                          to 1/16) where the output and the input stand farther than D apart (input units), either\n"
+  "                          way: cut creases, rounded small features, chords across bends; what is still farther is\n"
+  "                          reported (0: none)\n"
+  "  --relative-surface-distance R  the same, D = R times the target edge length (default 0.25)\n"
   "  --no-repair             refuse polygons, inconsistent orientation, isolated vertices, cracks, non-manifold\n"
   "                          edges and vertices and degenerate faces (by default polygons are triangulated, faces\n"
   "                          oriented, isolated vertices removed, borders along the same points stitched,\n"
@@ -95,7 +100,7 @@ struct Options
   std::string input, output, report, plots, patches, save_patches, deviation_map;
   double target = 0., relative = 0.01, min_angle = 28., features_angle = 60., crease_angle = 40.;
   double time_limit = std::numeric_limits<double>::infinity();
-  double chord_error = 0.;
+  double chord_error = 0., surface_distance = -1., relative_surface_distance = 0.25; // surface_distance < 0: not given
   int optimization_rounds = 5, lloyd_iterations = 0;
   double batch_faces = 2000000.;
   std::vector<K::Plane_3> planes;
@@ -201,6 +206,10 @@ inline bool parse(int argc, char** argv, Options& o)
       ok = number(o.batch_faces) && o.batch_faces >= 0. && o.batch_faces == std::floor(o.batch_faces) && o.batch_faces < 1e18;
     else if(arg == "--chord-error")
       ok = number(o.chord_error) && o.chord_error >= 0.;
+    else if(arg == "--surface-distance")
+      ok = number(o.surface_distance) && o.surface_distance >= 0. && std::isfinite(o.surface_distance);
+    else if(arg == "--relative-surface-distance")
+      ok = number(o.relative_surface_distance) && o.relative_surface_distance >= 0. && std::isfinite(o.relative_surface_distance);
     else if(!arg.empty() && arg[0] != '-' && o.input.empty())
       o.input = arg;
     else if(!arg.empty() && arg[0] != '-' && o.output.empty())
@@ -316,12 +325,13 @@ inline int run(int argc, char** argv, const CGAL::Conformal_remeshing::internal:
   const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin())
                                     + CGAL::square(box.zmax() - box.zmin()));
   const double target = o.target > 0. ? o.target : o.relative * diagonal;
-  const auto np = CR::parameters::frontal_insertion(o.frontal, CR::parameters::maximum_chord_error(o.chord_error, CR::parameters::optimization_rounds(o.optimization_rounds, CR::parameters::lloyd_iterations(o.lloyd_iterations, CR::parameters::target_edge_length(
+  const double surface_distance = o.surface_distance >= 0. ? o.surface_distance : o.relative_surface_distance * target;
+  const auto np = CR::parameters::maximum_surface_distance(surface_distance, CR::parameters::frontal_insertion(o.frontal, CR::parameters::maximum_chord_error(o.chord_error, CR::parameters::optimization_rounds(o.optimization_rounds, CR::parameters::lloyd_iterations(o.lloyd_iterations, CR::parameters::target_edge_length(
     target, CR::parameters::minimum_angle(
               o.min_angle, CR::parameters::crease_angle(o.crease_angle, CR::parameters::features_angle(
                              o.features_angle, CR::parameters::cut_planes(
                                                  o.planes, CR::parameters::features_fallback(
-                                                             !o.features_angle_given, CR::parameters::progress(progress, CGAL::parameters::face_patch_map(patch_of))))))))))));
+                                                             !o.features_angle_given, CR::parameters::progress(progress, CGAL::parameters::face_patch_map(patch_of)))))))))))));
 
   if(!o.save_patches.empty())
   {
@@ -408,7 +418,7 @@ inline int run(int argc, char** argv, const CGAL::Conformal_remeshing::internal:
       // The options the output depends on, to rerun it (the sequential or parallel run gives the same).
       json.key("parameters").begin_object().field("min_angle", o.min_angle).field("features_angle", o.features_angle).field("crease_angle", o.crease_angle)
           .field("optimization_rounds", o.optimization_rounds).field("lloyd_iterations", o.lloyd_iterations)
-          .field("chord_error", o.chord_error).field("cut_planes", o.planes.size()).field("patches", o.patches)
+          .field("chord_error", o.chord_error).field("surface_distance", report.surface_distance_bound).field("cut_planes", o.planes.size()).field("patches", o.patches)
           .field("repair", o.repair).field("frontal_insertion", o.frontal).field("batch_faces", std::size_t(o.batch_faces)).end_object();
       json.key("input_repairs").begin_object().field("triangulated_polygons", repaired.triangulated_polygons)
           .field("triangles_from_polygons", repaired.triangles_from_polygons).field("reoriented_faces", repaired.reoriented_faces)
@@ -424,6 +434,7 @@ inline int run(int argc, char** argv, const CGAL::Conformal_remeshing::internal:
       json.key("seconds").begin_object().field("segmentation", statistics.seconds_segmentation)
           .field("flattening", statistics.seconds_flattening).field("meshing_and_pull_back", statistics.seconds_meshing_stage)
           .field("gluing", statistics.seconds_gluing).field("proximity", statistics.seconds_proximity)
+          .field("surface_distance", statistics.seconds_surface_distance)
           .field("ricci_flow_thread_seconds", statistics.seconds_ricci_flow)
           .field("planar_meshing_thread_seconds", statistics.seconds_planar_meshing)
           .field("optimization_thread_seconds", statistics.seconds_optimization)
@@ -447,6 +458,15 @@ inline int run(int argc, char** argv, const CGAL::Conformal_remeshing::internal:
       for(double c : report.smallest_gap_point)
         json.value(std::isfinite(report.smallest_gap) ? c : std::numeric_limits<double>::quiet_NaN());
       json.end_array().field("gap_bounded_vertices", report.gap_bounded_vertices).end_object();
+      // The surface-distance bound and what its check found on the output (0 and none: no bound).
+      json.key("surface_distance").begin_object().field("bound", report.surface_distance_bound)
+          .field("refinements", report.surface_distance_refinements).field("places", report.places_beyond_surface_distance)
+          .field("rounds_dropped", report.surface_distance_rounds_dropped)
+          .field("largest", report.largest_surface_distance)
+          .field("output_faces_beyond", report.output_faces_beyond_surface_distance)
+          .field("input_vertices_beyond", report.input_vertices_beyond_surface_distance)
+          .field("input_edges_beyond", report.input_edges_beyond_surface_distance)
+          .field("input_faces_beyond", report.input_faces_beyond_surface_distance).end_object();
       json.key("frontal_insertion").begin_object().field("dropped", report.frontal_dropped)
           .field("fallback_reason", report.frontal_fallback_reason).end_object();
       json.key("flattening").begin_object().field("max_iterations", statistics.max_newton_iterations)
@@ -530,6 +550,17 @@ inline int run(int argc, char** argv, const CGAL::Conformal_remeshing::internal:
               << tools::deviation_histogram_line(deviations.of_mesh_faces, report.target_edge_length)
               << "\n  distance of the input's faces to the output: "
               << tools::deviation_histogram_line(deviations.of_reference_faces, report.target_edge_length) << "\n";
+  if(report.surface_distance_bound > 0.)
+    std::cout << "  surface distance bound " << report.surface_distance_bound << ": " << report.surface_distance_refinements
+              << " rounds of meshing again near " << report.places_beyond_surface_distance << " places"
+              << (report.surface_distance_rounds_dropped > 0
+                    ? " (" + std::to_string(report.surface_distance_rounds_dropped) + " more dropped: their output intersected itself or was no closer)"
+                    : std::string())
+              << "; largest distance found "
+              << report.largest_surface_distance << ", still beyond the bound: " << report.output_faces_beyond_surface_distance
+              << " output faces, " << report.input_vertices_beyond_surface_distance << " input vertices, "
+              << report.input_edges_beyond_surface_distance << " input edges, " << report.input_faces_beyond_surface_distance
+              << " input faces\n";
   if(std::isfinite(report.smallest_gap))
     std::cout << "  sheets of the input " << report.smallest_gap << " apart at (" << report.smallest_gap_point[0] << ", "
               << report.smallest_gap_point[1] << ", " << report.smallest_gap_point[2] << "); the gaps shortened the target at "

@@ -105,6 +105,28 @@ struct Remeshing_report
   std::size_t gap_bounded_vertices = 0;
   /// rounds of meshing again with shorter edges where the output intersected itself (0 to 4)
   std::size_t self_intersection_refinements = 0;
+  /// the surface-distance bound (named parameter `maximum_surface_distance`; 0: none)
+  double surface_distance_bound = 0.;
+  /// rounds of meshing again with shorter edges where the output stood farther from the input
+  /// than the bound (0 to 4)
+  std::size_t surface_distance_refinements = 0;
+  /// the places meshed again for the bound, over all rounds (about a quarter target apart)
+  std::size_t places_beyond_surface_distance = 0;
+  /// the last rounds of meshing again for the bound, dropped because their output intersected
+  /// itself beyond mending (or their patches did not glue) or stood no closer to the input than
+  /// the output before: the output is the last one before them
+  std::size_t surface_distance_rounds_dropped = 0;
+  /// of the output: its largest distance from the input and the input's from it, found at the
+  /// samples of the check (on the output's faces and the input's edges, a quarter target apart,
+  /// and at the input's vertices); 0 when
+  /// there is no bound
+  double largest_surface_distance = 0.;
+  /// of the output: its faces, and the input's vertices, edges and faces, with a point still
+  /// farther than the bound from the other after the last round
+  std::size_t output_faces_beyond_surface_distance = 0;
+  std::size_t input_vertices_beyond_surface_distance = 0;
+  std::size_t input_edges_beyond_surface_distance = 0;
+  std::size_t input_faces_beyond_surface_distance = 0;
   std::size_t refined_boundary_curves = 0; ///< times a boundary curve of a thin patch was sampled twice as densely
   std::size_t split_diagonals = 0; ///< times a patch split an edge between two samples that another patch also has
   /// batches of whole components the input was remeshed in (named parameter `batch_faces`;
@@ -161,6 +183,7 @@ struct Remeshing_statistics
   /// wall-clock seconds of the stages (the flattening and meshing stages run patches in parallel)
   double seconds_segmentation = 0., seconds_flattening = 0., seconds_meshing_stage = 0., seconds_gluing = 0.;
   double seconds_proximity = 0.; ///< wall-clock seconds of measuring the gaps between sheets
+  double seconds_surface_distance = 0.; ///< wall-clock seconds of checking the surface-distance bound
   /// seconds summed over the patches (thread time; the optimization's vertex moves within a
   /// patch run in parallel too, so `seconds_optimization` sums the patches' wall time)
   double seconds_ricci_flow = 0., seconds_planar_meshing = 0., seconds_optimization = 0., seconds_pull_back = 0.;

@@ -71,6 +71,7 @@ CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(target_edge_length)          // double,
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(relative_target_edge_length) // double, of the diagonal
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(sizing_field)                // double(const Epick::Point_3&)
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(maximum_chord_error)         // double, input units
+CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(maximum_surface_distance)    // double, input units
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(minimum_angle)               // double, degrees
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(corner_angle)                // double, degrees
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(frontal_insertion)           // bool

@@ -54,8 +54,9 @@ struct Coplanar_region
 };
 
 // Appends to `out` a constrained Delaunay triangulation of `region`'s outline refined by CGAL's
-// Delaunay mesher to smallest angles of about 20 degrees (no size bound: few points where the
-// outline is coarse), lifted back onto the region's plane; false (nothing appended) when that
+// Delaunay mesher towards smallest angles of about 20 degrees (no size bound: few points where
+// the outline is coarse; at most about as many steps as the region has faces), lifted back onto
+// the region's plane; false (nothing appended) when that
 // triangulation does not cover the region's area (overlapping faces, crossing sides).
 inline bool append_retriangulation(const Coplanar_region& region, const std::vector<Point_3>& points,
                                    std::vector<Triangle_3>& out)
@@ -105,9 +106,15 @@ inline bool append_retriangulation(const Coplanar_region& region, const std::vec
   mark_constraint_depth(cdt);
   for(auto f : cdt.all_face_handles())
     f->set_in_domain(f->info() % 2 == 1);
+  // Refined step by step, a bounded number of steps: next to the small angles of a CAD outline
+  // the refinement would add points without end (or millions). Stopped early, the triangulation
+  // still covers the region, with some triangles left thin.
   CGAL::Delaunay_mesher_2<CDT, CGAL::Delaunay_mesh_criteria_2<CDT> > mesher(cdt, CGAL::Delaunay_mesh_criteria_2<CDT>(0.125));
   mesher.init(true);
-  mesher.refine_mesh();
+  const std::size_t most_steps = region.faces.size() + 16;
+  for(std::size_t step = 0; step < most_steps && mesher.step_by_step_refine_mesh(); ++step)
+  {
+  }
 
   std::vector<Triangle_3> triangles;
   double covered = 0.;

@@ -144,6 +144,15 @@ inline void add_batch_report(Remeshing_report& total, const Remeshing_report& ba
   }
   total.gap_bounded_vertices += batch.gap_bounded_vertices;
   total.self_intersection_refinements = (std::max)(total.self_intersection_refinements, batch.self_intersection_refinements);
+  total.surface_distance_bound = batch.surface_distance_bound;
+  total.surface_distance_refinements = (std::max)(total.surface_distance_refinements, batch.surface_distance_refinements);
+  total.places_beyond_surface_distance += batch.places_beyond_surface_distance;
+  total.surface_distance_rounds_dropped += batch.surface_distance_rounds_dropped;
+  total.largest_surface_distance = (std::max)(total.largest_surface_distance, batch.largest_surface_distance);
+  total.output_faces_beyond_surface_distance += batch.output_faces_beyond_surface_distance;
+  total.input_vertices_beyond_surface_distance += batch.input_vertices_beyond_surface_distance;
+  total.input_edges_beyond_surface_distance += batch.input_edges_beyond_surface_distance;
+  total.input_faces_beyond_surface_distance += batch.input_faces_beyond_surface_distance;
   total.refined_boundary_curves += batch.refined_boundary_curves;
   total.split_diagonals += batch.split_diagonals;
 }
@@ -173,6 +182,7 @@ inline void add_batch_statistics(Remeshing_statistics& total, const Remeshing_st
   total.seconds_meshing_stage += batch.seconds_meshing_stage;
   total.seconds_gluing += batch.seconds_gluing;
   total.seconds_proximity += batch.seconds_proximity;
+  total.seconds_surface_distance += batch.seconds_surface_distance;
   total.seconds_ricci_flow += batch.seconds_ricci_flow;
   total.seconds_planar_meshing += batch.seconds_planar_meshing;
   total.seconds_optimization += batch.seconds_optimization;

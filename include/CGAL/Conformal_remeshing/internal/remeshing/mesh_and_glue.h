@@ -10,7 +10,13 @@
 //     the target there, graded to the target by half the distance, then a quarter, up to
 //     `max_self_intersection_refinements` rounds; the flattenings are kept, and so are the meshes
 //     of the patches that have no intersecting triangle and whose boundary samples stay the same;
-//  2. with frontal insertion, should the frontally placed points still not mesh the surface (patches
+//  2. with a surface-distance bound, the places where the output stands farther from the input
+//     than it, either way (surface_distance.h), are meshed again with edges of half the target
+//     there, halved again where it still does (`max_surface_distance_refinements` rounds); what
+//     is still farther is reported, not refused, and should a round give an output that policy 1
+//     cannot mend (or patches that do not glue), or one no closer to the input than the output
+//     before it, that output before it is kept;
+//  3. with frontal insertion, should the frontally placed points still not mesh the surface (patches
 //     that do not glue, an output that intersects itself), the surface is meshed again by Delaunay
 //     refinement alone, with the same rounds.
 // The patch-local mending (denser boundary curves, split diagonals) is the meshing stage's own
@@ -30,10 +36,12 @@
 #include <CGAL/Conformal_remeshing/internal/remeshing/remeshing_options.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/segment_and_flatten.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/sizing.h>
+#include <CGAL/Conformal_remeshing/internal/remeshing/surface_distance.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/tuning.h>
 
 #include <chrono>
 #include <functional>
+#include <memory>
 #include <set>
 #include <sstream>
 #include <string>
@@ -88,9 +96,31 @@ inline Error self_intersection_error(const std::vector<Epick::Point_3>& crossing
                  + touching);
 }
 
+/// The places of `glued` beyond the surface-distance bound, the bound's figures of the output
+/// in `report`. `to_input` is built by the first call, for the next ones.
+template <typename ConcurrencyTag, typename TriangleMesh>
+Places_beyond_distance check_surface_distance(const Flattened_surface& surface, std::unique_ptr<Distance_to_surface>& to_input,
+                                              const Glued_output<TriangleMesh>& glued, const Remeshing_options& options,
+                                              Remeshing_report& report, Remeshing_statistics& statistics)
+{
+  const auto start = std::chrono::steady_clock::now();
+  if(!to_input)
+    to_input = std::make_unique<Distance_to_surface>(surface.segmentation.mesh);
+  Places_beyond_distance far = places_beyond_distance<ConcurrencyTag>(
+    surface.segmentation.mesh, *to_input, glued.mesh, options.maximum_surface_distance, 0.25 * options.target_edge_length);
+  report.largest_surface_distance = far.largest;
+  report.output_faces_beyond_surface_distance = far.output_faces;
+  report.input_vertices_beyond_surface_distance = far.input_vertices;
+  report.input_edges_beyond_surface_distance = far.input_edges;
+  report.input_faces_beyond_surface_distance = far.input_faces;
+  statistics.seconds_surface_distance += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return far;
+}
+
 /// The patches of `surface` meshed and glued with `meshing`, meshed again finer where the output
-/// intersects itself (policy 1 above).
-/// \throws Error with `Error_code::NOT_AN_EMBEDDING` when it still does after the last round.
+/// intersects itself (policy 1 above) or, with a surface-distance bound, strays farther from the
+/// input than it (policy 2).
+/// \throws Error with `Error_code::NOT_AN_EMBEDDING` when it still intersects itself after the last round.
 template <typename ConcurrencyTag, typename TriangleMesh, typename Progress>
 Glued_output<TriangleMesh> mesh_and_glue(const Flattened_surface& surface, const Remeshing_options& options,
                                          const Patch_meshing& meshing, const Surface_proximity& proximity,
@@ -102,52 +132,103 @@ Glued_output<TriangleMesh> mesh_and_glue(const Flattened_surface& surface, const
   const auto seconds_since = [](Clock::time_point t) { return std::chrono::duration<double>(Clock::now() - t).count(); };
   const double h = options.target_edge_length;
   std::vector<Epick::Point_3> crossings; // centroids of intersecting triangles, a quarter target apart
+  Distance_refinement far_places(h, 0.5 * h); // places beyond the distance bound, with their sizes
+  std::unique_ptr<Distance_to_surface> to_input; // built for the first check of the distance bound
   Meshed_patches meshed;
   std::set<std::size_t> crossing_patches;
-  for(int refinement = 0;; ++refinement)
+  int crossing_rounds = 0, distance_rounds = 0;
+  report.surface_distance_bound = options.maximum_surface_distance;
+  report.places_beyond_surface_distance = 0;
+  report.surface_distance_rounds_dropped = 0;
+  // The last output that did not intersect itself, and the report then, while the places beyond
+  // the distance bound are meshed again: should that give an output whose crossings cannot be
+  // mended, patches that do not glue, or an output no closer to the input, the last one is
+  // returned.
+  std::unique_ptr<Glued_output<TriangleMesh> > kept;
+  Remeshing_report report_of_kept;
+  const auto return_kept = [&](const std::string& why) {
+    const std::size_t dropped = std::size_t(distance_rounds) - report_of_kept.surface_distance_refinements;
+    report = report_of_kept;
+    report.surface_distance_rounds_dropped = dropped;
+    progress("meshing again for the distance bound " + why + ": the output before it is kept");
+    return std::move(*kept);
+  };
+  for(int round = 0;; ++round)
   {
     Clock::time_point start = Clock::now();
-    progress(refinement == 0 ? "meshing " + std::to_string(surface.patches.size()) + " patches"
-                             : "meshing again " + std::to_string(crossing_patches.size()) + " patches and their neighbours");
-    Local_refinement near_crossings;
-    near_crossings.points = crossings;
-    near_crossings.size = h / double(1 << refinement);
-    const Sizing sizing(surface.segmentation, h, options.sizing_field, options.maximum_chord_error, near_crossings, proximity.gap);
-    if(refinement == 0)
+    progress(round == 0 ? "meshing " + std::to_string(surface.patches.size()) + " patches"
+                        : crossing_patches.empty() ? "meshing again near " + std::to_string(far_places.places().points.size()) + " places"
+                                                   : "meshing again " + std::to_string(crossing_patches.size()) + " patches and their neighbours");
+    Local_refinement places = far_places.places();
+    places.add(crossings, h / double(1 << crossing_rounds));
+    const Sizing sizing(surface.segmentation, h, options.sizing_field, options.maximum_chord_error, places, proximity.gap);
+    if(round == 0)
       report.gap_bounded_vertices = sizing.gap_bounded_vertices();
-    meshed = mesh_patches_on_shared_samples<ConcurrencyTag>(surface, sizing, options.corner_angle, meshing,
-                                                            options.patch_job_runner, time_limit, progress,
-                                                            report, refinement == 0 ? nullptr : &meshed, crossing_patches);
-    statistics.seconds_meshing_stage += seconds_since(start);
-    statistics.peak_resident_mb_meshing = peak_resident_megabytes();
-    add_meshing_statistics(meshed, statistics);
+    Glued_output<TriangleMesh> glued;
+    try
+    {
+      meshed = mesh_patches_on_shared_samples<ConcurrencyTag>(surface, sizing, options.corner_angle, meshing,
+                                                              options.patch_job_runner, time_limit, progress,
+                                                              report, round == 0 ? nullptr : &meshed, crossing_patches);
+      statistics.seconds_meshing_stage += seconds_since(start);
+      statistics.peak_resident_mb_meshing = peak_resident_megabytes();
+      add_meshing_statistics(meshed, statistics);
 
-    start = Clock::now();
-    progress("gluing");
-    Glued_output<TriangleMesh> glued = glue_patches<ConcurrencyTag, TriangleMesh>(
-      meshed, surface.segmentation, sizing, options.minimum_angle, input_self_intersects, statistics);
-    statistics.seconds_gluing += seconds_since(start);
-    statistics.peak_resident_mb_gluing = peak_resident_megabytes();
+      start = Clock::now();
+      progress("gluing");
+      glued = glue_patches<ConcurrencyTag, TriangleMesh>(meshed, surface.segmentation, sizing, options.minimum_angle,
+                                                         input_self_intersects, statistics);
+      statistics.seconds_gluing += seconds_since(start);
+      statistics.peak_resident_mb_gluing = peak_resident_megabytes();
+      if(glued.intersects && (crossing_rounds == max_self_intersection_refinements || glued.crossings.empty()))
+        throw self_intersection_error(glued.crossings, report.input.coincident_vertices);
+    }
+    catch(const Error& e)
+    {
+      if(e.code() != Error_code::NOT_AN_EMBEDDING || !kept)
+        throw;
+      return return_kept("gave no valid output (" + without_caller(e.what()) + ")");
+    }
     if(!glued.intersects)
-      return glued;
-    if(refinement == max_self_intersection_refinements || glued.crossings.empty())
-      throw self_intersection_error(glued.crossings, report.input.coincident_vertices);
+    {
+      if(!(options.maximum_surface_distance > 0.))
+        return glued;
+      progress("checking the distance to the input");
+      const Places_beyond_distance far = check_surface_distance<ConcurrencyTag>(surface, to_input, glued, options, report, statistics);
+      if(kept && !(far.largest < report_of_kept.largest_surface_distance))
+        return return_kept("brought the output no closer to the input (" + std::to_string(far.largest) + " at most, "
+                           + std::to_string(report_of_kept.largest_surface_distance) + " before)");
+      if(far.places.empty() || distance_rounds == max_surface_distance_refinements)
+        return glued;
+      report_of_kept = report;
+      kept = std::make_unique<Glued_output<TriangleMesh> >(std::move(glued));
+      ++distance_rounds;
+      far_places.add(far.places);
+      report.surface_distance_refinements = std::size_t(distance_rounds);
+      report.places_beyond_surface_distance += far.places.size();
+      progress(std::to_string(far.output_faces) + " output faces and " + std::to_string(far.input_vertices) + " input vertices, "
+               + std::to_string(far.input_edges) + " edges and " + std::to_string(far.input_faces)
+               + " faces farther apart than the distance bound (" + std::to_string(far.largest) + " at most, the bound "
+               + std::to_string(options.maximum_surface_distance) + "): meshing again with shorter edges there");
+      continue;
+    }
     const std::set<std::size_t> around = with_neighbours(glued.crossing_patches, meshed);
     crossing_patches.insert(around.begin(), around.end());
     const std::size_t known = crossings.size();
     for(const Epick::Point_3& c : glued.crossings)
       add_if_far(crossings, c, 0.25 * h);
-    report.self_intersection_refinements = std::size_t(refinement) + 1;
+    ++crossing_rounds;
+    report.self_intersection_refinements = std::size_t(crossing_rounds);
     std::ostringstream near;
     near << glued.crossings.front().x() << ", " << glued.crossings.front().y() << ", " << glued.crossings.front().z();
     progress("the output intersects itself at " + std::to_string(glued.crossings.size() / 2) + " pairs of triangles, near ("
              + near.str() + ") (" + std::to_string(crossings.size() - known) + " new places): meshing again with edges of 1/"
-             + std::to_string(1 << (refinement + 1)) + " of the target there");
+             + std::to_string(1 << crossing_rounds) + " of the target there");
   }
 }
 
 /// `mesh_and_glue()` with the options' point placement, then by Delaunay refinement alone should
-/// frontal insertion not mesh the surface (policy 2 above).
+/// frontal insertion not mesh the surface (policy 3 above).
 template <typename ConcurrencyTag, typename TriangleMesh, typename Progress>
 Glued_output<TriangleMesh> mesh_and_glue_with_fallback(const Flattened_surface& surface, const Remeshing_options& options,
                                                        const std::function<bool()>& input_self_intersects,

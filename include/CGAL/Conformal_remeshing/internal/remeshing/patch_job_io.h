@@ -304,7 +304,7 @@ struct Patch_job_serialization
     transfer(a, s.target_);
     transfer(a, s.gradation_);
     transfer(a, s.refinement_.points);
-    transfer(a, s.refinement_.size);
+    transfer(a, s.refinement_.sizes);
     transfer(a, s.refinement_.gradation);
     transfer(a, s.face_corners_);
   }

@@ -32,6 +32,7 @@ struct Remeshing_options
   double corner_angle = 30.;  // degrees
   double maximum_scale_ratio = 1000.;
   double maximum_chord_error = 0.; // 0: none
+  double maximum_surface_distance = 0.; // 0: none; by default `default_surface_distance` times the target
   Sizing::Field sizing_field;      // empty: uniform
   int optimization_rounds = 5;
   bool features_fallback = true;
@@ -82,6 +83,7 @@ Remeshing_options remeshing_options(const TriangleMesh& input, const NamedParame
   const double h = o.target_edge_length;
   if(!(h > 0.) || !std::isfinite(h))
     throw Error(Error_code::INVALID_INPUT, "remesh_conformal: the target edge length must be positive");
+  o.maximum_surface_distance = choose_parameter(get_parameter(np, internal_np::maximum_surface_distance), default_surface_distance * h);
   if(!(o.minimum_angle > 0. && o.minimum_angle <= 34.))
     throw Error(Error_code::INVALID_INPUT, "remesh_conformal: the minimum angle must be in (0, 34] degrees "
                                            "(no triangulation of a general domain keeps all its angles far above 30)");
@@ -93,6 +95,8 @@ Remeshing_options remeshing_options(const TriangleMesh& input, const NamedParame
     throw Error(Error_code::INVALID_INPUT, "remesh_conformal: the number of optimization rounds must not be negative");
   if(!(o.maximum_chord_error >= 0.) || !std::isfinite(o.maximum_chord_error))
     throw Error(Error_code::INVALID_INPUT, "remesh_conformal: the maximum chord error must be positive (or 0: none)");
+  if(!(o.maximum_surface_distance >= 0.) || !std::isfinite(o.maximum_surface_distance))
+    throw Error(Error_code::INVALID_INPUT, "remesh_conformal: the maximum surface distance must be positive (or 0: none)");
   return o;
 }
 

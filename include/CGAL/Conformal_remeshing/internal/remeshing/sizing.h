@@ -46,50 +46,61 @@ inline double graded_size(const Epick::Point_3& p, const Epick::Point_3& corner,
   return (std::min)(target, corner_size + gradation * std::sqrt(CGAL::squared_distance(p, corner)));
 }
 
-/// Sizes bounded near a few places: `size` at each of `points`, growing by `gradation` times the
-/// distance to the nearest of them. These are the sizes for meshing again near the places where
-/// an output intersected itself (a few, a quarter target apart: see `add_if_far()`). Kept as data,
-/// not as a function, so that a patch job can tell whether they reach its patch.
+/// Sizes bounded near a few places: `sizes[i]` at `points[i]`, growing by `gradation` times the
+/// distance to it; the bound at a point is the smallest over the places. These are the sizes for
+/// meshing again near the places where an output intersected itself or strayed farther from the
+/// surface than the distance bound (a few, thinned: see `add_if_far()` and surface_distance.h).
+/// Kept as data, not as a function, so that a patch job can tell whether they reach its patch.
 struct Local_refinement
 {
   std::vector<Epick::Point_3> points;
-  double size = 0.;
+  std::vector<double> sizes; ///< one per point
   double gradation = 0.5;
 
   bool empty() const { return points.empty(); }
 
+  /// Adds the places `at`, each of size `size`.
+  void add(const std::vector<Epick::Point_3>& at, double size)
+  {
+    points.insert(points.end(), at.begin(), at.end());
+    sizes.insert(sizes.end(), at.size(), size);
+  }
+
   /// The bound at `p`; infinite when there are no places.
   double at(const Epick::Point_3& p) const
   {
-    double nearest = std::numeric_limits<double>::infinity();
-    for(const Epick::Point_3& q : points)
-      nearest = (std::min)(nearest, CGAL::squared_distance(p, q));
-    return points.empty() ? nearest : size + gradation * std::sqrt(nearest);
+    double bound = std::numeric_limits<double>::infinity();
+    for(std::size_t i = 0; i < points.size(); ++i)
+      bound = (std::min)(bound, sizes[i] + gradation * std::sqrt(CGAL::squared_distance(p, points[i])));
+    return bound;
   }
 
   /// The places whose bound can be below `target` somewhere in `box`.
   Local_refinement within(const Bbox_3& box, double target) const
   {
     Local_refinement result;
-    result.size = size;
     result.gradation = gradation;
-    for(const Epick::Point_3& q : points)
+    for(std::size_t i = 0; i < points.size(); ++i)
     {
+      const Epick::Point_3& q = points[i];
       double squared = 0.;
-      for(int i = 0; i < 3; ++i)
+      for(int k = 0; k < 3; ++k)
       {
-        const double gap = (std::max)((std::max)(box.min(i) - q[i], q[i] - box.max(i)), 0.);
+        const double gap = (std::max)((std::max)(box.min(k) - q[k], q[k] - box.max(k)), 0.);
         squared += gap * gap;
       }
-      if(size + gradation * std::sqrt(squared) * (1. - 1e-12) < target) // a margin for the rounding of the distance
+      if(sizes[i] + gradation * std::sqrt(squared) * (1. - 1e-12) < target) // a margin for the rounding of the distance
+      {
         result.points.push_back(q);
+        result.sizes.push_back(sizes[i]);
+      }
     }
     return result;
   }
 
   friend bool operator==(const Local_refinement& a, const Local_refinement& b)
   {
-    return a.points == b.points && (a.points.empty() || (a.size == b.size && a.gradation == b.gradation));
+    return a.points == b.points && a.sizes == b.sizes && (a.points.empty() || a.gradation == b.gradation);
   }
 };
 

@@ -67,6 +67,17 @@ constexpr double kept_tip_tolerance = 0.03;
 // a tenth of the target across, need that last round: CGAL's cheese.off.)
 constexpr int max_self_intersection_refinements = 4;
 
+// Where a glued output stands farther from the input than `maximum_surface_distance`, those
+// places are meshed again with edges of half the target there, halved again where it still
+// does, in at most this many rounds: halving the edges quarters a chord's sagitta and halves
+// what a cut crease loses.
+constexpr int max_surface_distance_refinements = 4;
+
+// The default surface-distance bound, times the target edge length: a chord of a target length
+// on a circle of radius h stands 0.13 h off it, so smooth parts meshed at their scale stay
+// within it, while a small feature cut off or a crease rounded away shows.
+constexpr double default_surface_distance = 0.25;
+
 // A boundary curve of a patch whose chords do not glue is sampled twice as densely at most this
 // many times; diagonals shared by two patches are split in at most this many rounds.
 constexpr int max_curve_halvings = 6, max_diagonal_rounds = 4;

@@ -1,0 +1,95 @@
+// Copyright (c) 2026 CGAL Conformal Remeshing contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// Distances from points to a triangle mesh's surface, in plain double arithmetic, for the
+// quality measures (mesh_quality.h) and the remesher's surface-distance bound alike.
+
+#ifndef CGAL_CONFORMAL_REMESHING_INTERNAL_DISTANCE_TO_SURFACE_H
+#define CGAL_CONFORMAL_REMESHING_INTERNAL_DISTANCE_TO_SURFACE_H
+
+#include <CGAL/Conformal_remeshing/internal/parallel_for_each_index.h>
+#include <CGAL/Conformal_remeshing/internal/well_shaped_cover.h>
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Spatial_sort_traits_adapter_3.h>
+#include <CGAL/property_map.h>
+#include <CGAL/spatial_sort.h>
+
+#include <algorithm>
+#include <cstddef>
+#include <numeric>
+#include <vector>
+
+namespace CGAL {
+namespace Conformal_remeshing {
+namespace internal {
+
+/// Closest points on a reference surface, as `approximate_Hausdorff_distance()` finds them, but
+/// with the queries in plain double arithmetic: the samples of a remeshing lie on the reference,
+/// at distance 0, and CAD tessellations have flat bounding boxes, so the filtered sphere-box tests
+/// of the exact-predicates kernel are undecided for many nodes and fall back to exact arithmetic
+/// (a third of the time on a large CAD part). A distance needs no exact predicate: rounding moves
+/// it by a few units in the last place. The tree holds `well_shaped_cover(reference)`, not the
+/// faces: the bounding boxes of a CAD fan's long slivers cover their whole face, and every query
+/// there would open all of them.
+class Distance_to_surface
+{
+public:
+  typedef CGAL::Simple_cartesian<double> Fast;
+  typedef std::vector<Fast::Triangle_3> Triangles;
+  typedef CGAL::AABB_tree<CGAL::AABB_traits<Fast, CGAL::AABB_triangle_primitive<Fast, Triangles::const_iterator> > > Tree;
+
+  template <typename TriangleMesh>
+  explicit Distance_to_surface(const TriangleMesh& reference) : cover_(well_shaped_cover(reference)), tree_(cover_.begin(), cover_.end())
+  {
+    tree_.accelerate_distance_queries();
+  }
+  Distance_to_surface(const Distance_to_surface&) = delete;
+  Distance_to_surface& operator=(const Distance_to_surface&) = delete;
+
+  const Tree& tree() const { return tree_; }
+
+  /// The squared distance of each of `points` to the surface. The points are visited in spatial
+  /// order, and each query starts from the nearer of the previous point's closest point and the
+  /// nearest vertex the tree's search structure finds (CGAL 5.5's parallel loop starts every TBB
+  /// range from one vertex of the mesh): on a large CAD part about 40% less time than
+  /// `approximate_Hausdorff_distance()`.
+  template <typename Concurrency_tag>
+  std::vector<double> squared_distances(const std::vector<Fast::Point_3>& points) const
+  {
+    std::vector<std::size_t> order(points.size());
+    std::iota(order.begin(), order.end(), std::size_t(0));
+    const auto point_of_index = CGAL::make_property_map(points);
+    CGAL::spatial_sort(order.begin(), order.end(), CGAL::Spatial_sort_traits_adapter_3<Fast, decltype(point_of_index)>(point_of_index));
+    constexpr std::size_t block_size = 4096;
+    const std::size_t blocks = (points.size() + block_size - 1) / block_size;
+    std::vector<double> squared_distance(points.size(), 0.);
+    for_each_index<Concurrency_tag>(blocks, [&](std::size_t b) {
+      const std::size_t begin = b * block_size, end = (std::min)(points.size(), begin + block_size);
+      Fast::Point_3 closest = tree_.best_hint(points[order[begin]]).first;
+      for(std::size_t i = begin; i < end; ++i)
+      {
+        const Fast::Point_3& p = points[order[i]];
+        const Fast::Point_3 hint = tree_.best_hint(p).first;
+        if(CGAL::squared_distance(p, hint) < CGAL::squared_distance(p, closest))
+          closest = hint;
+        closest = tree_.closest_point(p, closest);
+        squared_distance[order[i]] = CGAL::squared_distance(p, closest);
+      }
+    });
+    return squared_distance;
+  }
+
+private:
+  Triangles cover_;
+  Tree tree_;
+};
+
+} // namespace internal
+} // namespace Conformal_remeshing
+} // namespace CGAL
+
+#endif // CGAL_CONFORMAL_REMESHING_INTERNAL_DISTANCE_TO_SURFACE_H

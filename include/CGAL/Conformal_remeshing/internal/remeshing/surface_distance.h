@@ -1,0 +1,375 @@
+// Copyright (c) 2026 CGAL Conformal Remeshing contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+//
+// The places where a glued output stands farther from the surface it remeshes than the
+// surface-distance bound, both ways: output faces whose chords leave the surface (a bend sharper
+// than the target follows), and input vertices, edges and faces the output passes by (a crease under the features
+// angle cut off, a small boss or slot rounded away). The meshing stage meshes those places again
+// with smaller edges (mesh_and_glue.h).
+
+#ifndef CGAL_CONFORMAL_REMESHING_INTERNAL_REMESHING_SURFACE_DISTANCE_H
+#define CGAL_CONFORMAL_REMESHING_INTERNAL_REMESHING_SURFACE_DISTANCE_H
+
+#include <CGAL/Conformal_remeshing/internal/distance_to_surface.h>
+#include <CGAL/Conformal_remeshing/internal/remeshing/sizing.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdint>
+#include <initializer_list>
+#include <map>
+#include <set>
+#include <vector>
+
+namespace CGAL {
+namespace Conformal_remeshing {
+namespace internal {
+namespace remeshing {
+
+/// What `places_beyond_distance()` found.
+struct Places_beyond_distance
+{
+  /// the samples farther than the bound, at most one per cell of a grid of the spacing asked
+  std::vector<Epick::Point_3> places;
+  std::size_t output_faces = 0;   ///< output faces with a sample farther than the bound
+  std::size_t input_vertices = 0; ///< input vertices farther than the bound from the output
+  std::size_t input_edges = 0;    ///< input edges with a point farther than the bound from the output
+  std::size_t input_faces = 0;    ///< input faces with a point farther than the bound from the output
+  double largest = 0.;            ///< the largest distance of a sample, either way
+};
+
+/// Keeps, of the points passed to `add()` in turn, the first in each cell of a grid of `spacing`:
+/// places at least about `spacing` apart, in time linear in their number.
+class Thinned_places
+{
+public:
+  explicit Thinned_places(double spacing) : spacing_(spacing) {}
+
+  void add(const Epick::Point_3& p, std::vector<Epick::Point_3>& places)
+  {
+    const std::array<std::int64_t, 3> cell{{std::int64_t(std::floor(p.x() / spacing_)), std::int64_t(std::floor(p.y() / spacing_)),
+                                            std::int64_t(std::floor(p.z() / spacing_))}};
+    if(cells_.insert(cell).second)
+      places.push_back(p);
+  }
+
+private:
+  double spacing_;
+  std::set<std::array<std::int64_t, 3> > cells_;
+};
+
+/// The places meshed again for the distance bound and their sizes: a new place gets half the
+/// smallest size of the earlier places within `reach` of it, or half the target where there is
+/// none, so that the edges shrink further only where the output stayed too far after meshing
+/// again (meshing a patch again moves all its vertices, so a round can also find new places).
+class Distance_refinement
+{
+public:
+  Distance_refinement(double target, double reach) : target_(target), reach_(reach) {}
+
+  const Local_refinement& places() const { return places_; }
+
+  void add(const std::vector<Epick::Point_3>& new_places)
+  {
+    std::vector<double> sizes;
+    for(const Epick::Point_3& p : new_places)
+      sizes.push_back(0.5 * smallest_size_near(p));
+    for(std::size_t i = 0; i < new_places.size(); ++i)
+    {
+      cells_[cell(new_places[i])].push_back(places_.points.size());
+      places_.points.push_back(new_places[i]);
+      places_.sizes.push_back(sizes[i]);
+    }
+  }
+
+private:
+  typedef std::array<std::int64_t, 3> Cell;
+
+  Cell cell(const Epick::Point_3& p) const
+  {
+    return {{std::int64_t(std::floor(p.x() / reach_)), std::int64_t(std::floor(p.y() / reach_)), std::int64_t(std::floor(p.z() / reach_))}};
+  }
+
+  double smallest_size_near(const Epick::Point_3& p) const
+  {
+    double smallest = target_;
+    const Cell c = cell(p);
+    for(std::int64_t dx = -1; dx <= 1; ++dx)
+      for(std::int64_t dy = -1; dy <= 1; ++dy)
+        for(std::int64_t dz = -1; dz <= 1; ++dz)
+        {
+          const auto found = cells_.find(Cell{{c[0] + dx, c[1] + dy, c[2] + dz}});
+          if(found != cells_.end())
+            for(std::size_t i : found->second)
+              if(CGAL::squared_distance(p, places_.points[i]) <= reach_ * reach_)
+                smallest = (std::min)(smallest, places_.sizes[i]);
+        }
+    return smallest;
+  }
+
+  double target_, reach_;
+  Local_refinement places_;
+  std::map<Cell, std::vector<std::size_t> > cells_;
+};
+
+/// The number of intervals a side of `length` is sampled with, at most `spacing` apart.
+inline std::size_t sample_intervals(double length, double spacing, std::size_t most)
+{
+  return (std::min)(most, std::size_t((std::max)(1., std::ceil(length / spacing))));
+}
+
+typedef Distance_to_surface::Fast::Point_3 Fast_point;
+
+/// A triangle mesh's vertices, edges and triangles in double precision, by index: the edges and
+/// triangles give the indices of their vertices, and each triangle the edges from its corner `k`
+/// to corner `k + 1`.
+struct Indexed_triangles
+{
+  std::vector<Fast_point> points;
+  std::vector<bool> used; ///< the vertices some face has
+  std::vector<std::array<std::size_t, 2> > edges;
+  std::vector<std::array<std::size_t, 3> > corners, sides;
+};
+
+template <typename TriangleMesh>
+Indexed_triangles indexed_triangles(const TriangleMesh& mesh)
+{
+  const auto points = get(CGAL::vertex_point, mesh);
+  const auto vim = CGAL::get_initialized_vertex_index_map(mesh);
+  const auto eim = CGAL::get_initialized_edge_index_map(mesh);
+  Indexed_triangles result;
+  std::size_t vertex_count = 0, edge_count = 0;
+  for(auto v : CGAL::vertices(mesh))
+    vertex_count = (std::max)(vertex_count, std::size_t(get(vim, v)) + 1);
+  for(auto e : CGAL::edges(mesh))
+    edge_count = (std::max)(edge_count, std::size_t(get(eim, e)) + 1);
+  result.points.resize(vertex_count);
+  result.used.assign(vertex_count, false);
+  result.edges.resize(edge_count);
+  for(auto v : CGAL::vertices(mesh))
+  {
+    const auto& p = get(points, v);
+    result.points[get(vim, v)] = Fast_point(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+  }
+  for(auto e : CGAL::edges(mesh))
+    result.edges[get(eim, e)] = {{std::size_t(get(vim, source(e, mesh))), std::size_t(get(vim, target(e, mesh)))}};
+  for(auto f : CGAL::faces(mesh))
+  {
+    std::array<std::size_t, 3> corners, sides;
+    auto h = halfedge(f, mesh);
+    for(int k = 0; k < 3; ++k, h = next(h, mesh))
+    {
+      corners[k] = std::size_t(get(vim, source(h, mesh)));
+      sides[k] = std::size_t(get(eim, edge(h, mesh)));
+      result.used[corners[k]] = true;
+    }
+    result.corners.push_back(corners);
+    result.sides.push_back(sides);
+  }
+  return result;
+}
+
+/// Points, each with the element it lies on (a vertex, edge or triangle), and their squared
+/// distances to a surface.
+struct Distance_samples
+{
+  std::vector<Fast_point> points;
+  std::vector<std::size_t> element;
+  std::vector<double> squared;
+
+  void add(const Fast_point& p, std::size_t e)
+  {
+    points.push_back(p);
+    element.push_back(e);
+  }
+
+  template <typename ConcurrencyTag>
+  void measure(const Distance_to_surface& surface)
+  {
+    squared = surface.squared_distances<ConcurrencyTag>(points);
+  }
+
+  /// Sets `near[element]` for the samples farther than `sqrt(squared_limit)`.
+  void mark_beyond(double squared_limit, std::vector<bool>& near) const
+  {
+    for(std::size_t i = 0; i < points.size(); ++i)
+      if(squared[i] > squared_limit)
+        near[element[i]] = true;
+  }
+};
+
+/// The points of a triangular grid on triangle `t` of `mesh` at most `spacing` apart, its corners
+/// excepted.
+inline void add_triangle_samples(const Indexed_triangles& mesh, std::size_t t, double spacing, Distance_samples& samples)
+{
+  const std::array<std::size_t, 3>& c = mesh.corners[t];
+  const Fast_point &a = mesh.points[c[0]], &b = mesh.points[c[1]], &d = mesh.points[c[2]];
+  const double longest = std::sqrt((std::max)((std::max)(CGAL::squared_distance(a, b), CGAL::squared_distance(b, d)),
+                                              CGAL::squared_distance(d, a)));
+  const std::size_t n = sample_intervals(longest, spacing, 16);
+  for(std::size_t i = 0; i <= n; ++i)
+    for(std::size_t j = 0; i + j <= n; ++j)
+      if(i != n && j != n && i + j != 0)
+        samples.add(a + (double(i) / double(n)) * (b - a) + (double(j) / double(n)) * (d - a), t);
+}
+
+/// The points along edge `e` of `mesh` at most `spacing` apart, its ends and its midpoint
+/// excepted (the midpoint is sampled first).
+inline void add_edge_samples(const Indexed_triangles& mesh, std::size_t e, double spacing, Distance_samples& samples)
+{
+  const Fast_point &a = mesh.points[mesh.edges[e][0]], &b = mesh.points[mesh.edges[e][1]];
+  std::size_t n = sample_intervals(std::sqrt(CGAL::squared_distance(a, b)), spacing, 64);
+  n += n % 2; // even, so that the midpoint is among the points
+  for(std::size_t k = 1; k < n; ++k)
+    if(2 * k != n)
+      samples.add(a + (double(k) / double(n)) * (b - a), e);
+}
+
+/// The first samples of a mesh, each point once: its vertices, the midpoints of its edges and
+/// the centroids of its triangles.
+struct Coarse_samples
+{
+  Distance_samples vertices, midpoints, centroids;
+};
+
+/// The coarse samples of `mesh`, its vertices only when `with_vertices`, measured against
+/// `surface`.
+template <typename ConcurrencyTag>
+Coarse_samples coarse_samples(const Indexed_triangles& mesh, const Distance_to_surface& surface, bool with_vertices)
+{
+  Coarse_samples coarse;
+  if(with_vertices)
+    for(std::size_t v = 0; v < mesh.points.size(); ++v)
+      if(mesh.used[v])
+        coarse.vertices.add(mesh.points[v], v);
+  for(std::size_t e = 0; e < mesh.edges.size(); ++e)
+    coarse.midpoints.add(CGAL::midpoint(mesh.points[mesh.edges[e][0]], mesh.points[mesh.edges[e][1]]), e);
+  for(std::size_t t = 0; t < mesh.corners.size(); ++t)
+  {
+    const std::array<std::size_t, 3>& c = mesh.corners[t];
+    coarse.centroids.add(CGAL::centroid(mesh.points[c[0]], mesh.points[c[1]], mesh.points[c[2]]), t);
+  }
+  coarse.vertices.measure<ConcurrencyTag>(surface);
+  coarse.midpoints.measure<ConcurrencyTag>(surface);
+  coarse.centroids.measure<ConcurrencyTag>(surface);
+  return coarse;
+}
+
+/// Flags over the triangles of `mesh`: those with a coarse sample farther than
+/// `sqrt(squared_limit)` (their centroid, an edge midpoint, or a corner when the vertices are
+/// sampled), or with a fine sample of `fine` that is.
+inline std::vector<bool> triangles_beyond(const Indexed_triangles& mesh, const Coarse_samples& coarse,
+                                          const Distance_samples& fine, double squared_limit)
+{
+  std::vector<bool> vertex_beyond(mesh.points.size(), false), edge_beyond(mesh.edges.size(), false);
+  std::vector<bool> beyond(mesh.corners.size(), false);
+  coarse.vertices.mark_beyond(squared_limit, vertex_beyond);
+  coarse.midpoints.mark_beyond(squared_limit, edge_beyond);
+  coarse.centroids.mark_beyond(squared_limit, beyond);
+  fine.mark_beyond(squared_limit, beyond);
+  for(std::size_t t = 0; t < mesh.corners.size(); ++t)
+    for(int k = 0; k < 3; ++k)
+      if(vertex_beyond[mesh.corners[t][k]] || edge_beyond[mesh.sides[t][k]])
+        beyond[t] = true;
+  return beyond;
+}
+
+/// The fine samples of the triangles (and, with `with_edges`, the edges) of `mesh` whose coarse
+/// samples come within half the bound of it, measured against `surface`: on a grid `spacing`
+/// apart.
+template <typename ConcurrencyTag>
+void sample_near_bound(const Indexed_triangles& mesh, const Coarse_samples& coarse, const Distance_to_surface& surface,
+                       double squared_half, double spacing, bool with_edges, Distance_samples& fine_triangles,
+                       Distance_samples& fine_edges)
+{
+  const std::vector<bool> near = triangles_beyond(mesh, coarse, Distance_samples(), squared_half);
+  for(std::size_t t = 0; t < near.size(); ++t)
+    if(near[t])
+      add_triangle_samples(mesh, t, spacing, fine_triangles);
+  if(with_edges)
+    for(std::size_t i = 0; i < coarse.midpoints.points.size(); ++i)
+      if(coarse.midpoints.squared[i] > squared_half)
+        add_edge_samples(mesh, coarse.midpoints.element[i], spacing, fine_edges);
+  fine_triangles.template measure<ConcurrencyTag>(surface);
+  fine_edges.template measure<ConcurrencyTag>(surface);
+}
+
+/// The samples of `output` and of `input` farther from the other than `bound`: the output's
+/// faces (their corners lie on the input) and the input's vertices, edges (where the output cuts
+/// a crease or rounds off a tip) and faces. Every vertex of the input, every edge midpoint and
+/// every face centroid of both is measured once; the faces with such a sample (or, for the
+/// input's faces, a corner) within half the bound of it, and the input's edges whose midpoint is,
+/// are sampled again on a grid `spacing` apart. `to_input` measures distances to `input`. The
+/// places are thinned to one per cell of `spacing`.
+template <typename ConcurrencyTag, typename InputMesh, typename OutputMesh>
+Places_beyond_distance places_beyond_distance(const InputMesh& input, const Distance_to_surface& to_input,
+                                              const OutputMesh& output, double bound, double spacing)
+{
+  const double squared_bound = bound * bound, squared_half = 0.25 * squared_bound;
+  Places_beyond_distance result;
+  Thinned_places thinned(spacing);
+  double largest = 0.;
+  const auto add_places = [&](const Distance_samples& samples) {
+    for(std::size_t i = 0; i < samples.points.size(); ++i)
+    {
+      largest = (std::max)(largest, samples.squared[i]);
+      if(samples.squared[i] > squared_bound)
+        thinned.add(Epick::Point_3(samples.points[i].x(), samples.points[i].y(), samples.points[i].z()), result.places);
+    }
+  };
+  const auto count = [](const std::vector<bool>& flags) { return std::size_t(std::count(flags.begin(), flags.end(), true)); };
+
+  // The output's faces, against the input (their corners lie on it).
+  const Indexed_triangles out = indexed_triangles(output);
+  const Coarse_samples out_coarse = coarse_samples<ConcurrencyTag>(out, to_input, false);
+  Distance_samples out_fine, no_edges;
+  sample_near_bound<ConcurrencyTag>(out, out_coarse, to_input, squared_half, spacing, false, out_fine, no_edges);
+  result.output_faces = count(triangles_beyond(out, out_coarse, out_fine, squared_bound));
+  for(const Distance_samples* samples : std::initializer_list<const Distance_samples*>{&out_coarse.midpoints, &out_coarse.centroids, &out_fine})
+    add_places(*samples);
+
+  // The input's vertices, edges and faces, against the output.
+  const Indexed_triangles in = indexed_triangles(input);
+  const Distance_to_surface to_output(output);
+  const Coarse_samples in_coarse = coarse_samples<ConcurrencyTag>(in, to_output, true);
+  Distance_samples in_fine, in_fine_edges;
+  sample_near_bound<ConcurrencyTag>(in, in_coarse, to_output, squared_half, spacing, true, in_fine, in_fine_edges);
+  std::vector<bool> vertex_beyond(in.points.size(), false), edge_beyond(in.edges.size(), false);
+  in_coarse.vertices.mark_beyond(squared_bound, vertex_beyond);
+  in_coarse.midpoints.mark_beyond(squared_bound, edge_beyond);
+  in_fine_edges.mark_beyond(squared_bound, edge_beyond);
+  result.input_vertices = count(vertex_beyond);
+  result.input_edges = count(edge_beyond);
+  result.input_faces = count(triangles_beyond(in, in_coarse, in_fine, squared_bound));
+  for(const Distance_samples* samples : std::initializer_list<const Distance_samples*>{&in_coarse.vertices, &in_coarse.midpoints, &in_coarse.centroids, &in_fine, &in_fine_edges})
+    add_places(*samples);
+  // An input edge beyond the bound somewhere is a crease the output cuts there; where it does
+  // not cut it this time is chance (where the output's vertices fell), so the whole edge
+  // becomes places: a CAD edge is then meshed finer along its length at once, a scan's short
+  // edge where it is.
+  for(std::size_t e = 0; e < in.edges.size(); ++e)
+    if(edge_beyond[e])
+    {
+      const Fast_point &a = in.points[in.edges[e][0]], &b = in.points[in.edges[e][1]];
+      const std::size_t n = sample_intervals(std::sqrt(CGAL::squared_distance(a, b)), spacing, std::size_t(-1));
+      for(std::size_t k = 0; k <= n; ++k)
+      {
+        const Fast_point p = a + (double(k) / double(n)) * (b - a);
+        thinned.add(Epick::Point_3(p.x(), p.y(), p.z()), result.places);
+      }
+    }
+  result.largest = std::sqrt(largest);
+  return result;
+}
+
+} // namespace remeshing
+} // namespace internal
+} // namespace Conformal_remeshing
+} // namespace CGAL
+
+#endif // CGAL_CONFORMAL_REMESHING_INTERNAL_REMESHING_SURFACE_DISTANCE_H
