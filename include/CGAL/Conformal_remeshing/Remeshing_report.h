@@ -117,9 +117,8 @@ struct Remeshing_report
   /// the output before: the output is the last one before them
   std::size_t surface_distance_rounds_dropped = 0;
   /// of the output: its largest distance from the input and the input's from it, found at the
-  /// samples of the check (on the output's faces and the input's edges, a quarter target apart,
-  /// and at the input's vertices); 0 when
-  /// there is no bound
+  /// samples of the check (the faces' centroids, the input's vertices and edge midpoints, and a
+  /// grid a quarter target apart near the bound); 0 when there is no bound
   double largest_surface_distance = 0.;
   /// of the output: its faces, and the input's vertices, edges and faces, with a point still
   /// farther than the bound from the other after the last round

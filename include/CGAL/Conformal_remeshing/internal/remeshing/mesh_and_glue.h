@@ -117,6 +117,18 @@ Places_beyond_distance check_surface_distance(const Flattened_surface& surface, 
   return far;
 }
 
+/// Whether meshing again for the distance bound brought the output closer to the input than the
+/// output of `before`: its largest distance found is smaller, or fewer of its elements (and the
+/// input's) stand beyond the bound. Not the largest alone: meshing a patch again moves all its
+/// vertices, and one new far place elsewhere can outweigh many mended ones.
+inline bool brought_closer(const Places_beyond_distance& far, const Remeshing_report& before)
+{
+  const std::size_t beyond = far.output_faces + far.input_vertices + far.input_edges + far.input_faces;
+  const std::size_t beyond_before = before.output_faces_beyond_surface_distance + before.input_vertices_beyond_surface_distance
+                                    + before.input_edges_beyond_surface_distance + before.input_faces_beyond_surface_distance;
+  return far.largest < before.largest_surface_distance || beyond < beyond_before;
+}
+
 /// The patches of `surface` meshed and glued with `meshing`, meshed again finer where the output
 /// intersects itself (policy 1 above) or, with a surface-distance bound, strays farther from the
 /// input than it (policy 2).
@@ -195,7 +207,7 @@ Glued_output<TriangleMesh> mesh_and_glue(const Flattened_surface& surface, const
         return glued;
       progress("checking the distance to the input");
       const Places_beyond_distance far = check_surface_distance<ConcurrencyTag>(surface, to_input, glued, options, report, statistics);
-      if(kept && !(far.largest < report_of_kept.largest_surface_distance))
+      if(kept && !brought_closer(far, report_of_kept))
         return return_kept("brought the output no closer to the input (" + std::to_string(far.largest) + " at most, "
                            + std::to_string(report_of_kept.largest_surface_distance) + " before)");
       if(far.places.empty() || distance_rounds == max_surface_distance_refinements)

@@ -237,18 +237,20 @@ struct Coarse_samples
   Distance_samples vertices, midpoints, centroids;
 };
 
-/// The coarse samples of `mesh`, its vertices only when `with_vertices`, measured against
-/// `surface`.
+/// The coarse samples of `mesh`, measured against `surface`: the centroids, and the vertices and
+/// edge midpoints only when `with_vertices_and_edges`.
 template <typename ConcurrencyTag>
-Coarse_samples coarse_samples(const Indexed_triangles& mesh, const Distance_to_surface& surface, bool with_vertices)
+Coarse_samples coarse_samples(const Indexed_triangles& mesh, const Distance_to_surface& surface, bool with_vertices_and_edges)
 {
   Coarse_samples coarse;
-  if(with_vertices)
+  if(with_vertices_and_edges)
+  {
     for(std::size_t v = 0; v < mesh.points.size(); ++v)
       if(mesh.used[v])
         coarse.vertices.add(mesh.points[v], v);
-  for(std::size_t e = 0; e < mesh.edges.size(); ++e)
-    coarse.midpoints.add(CGAL::midpoint(mesh.points[mesh.edges[e][0]], mesh.points[mesh.edges[e][1]]), e);
+    for(std::size_t e = 0; e < mesh.edges.size(); ++e)
+      coarse.midpoints.add(CGAL::midpoint(mesh.points[mesh.edges[e][0]], mesh.points[mesh.edges[e][1]]), e);
+  }
   for(std::size_t t = 0; t < mesh.corners.size(); ++t)
   {
     const std::array<std::size_t, 3>& c = mesh.corners[t];
@@ -260,18 +262,33 @@ Coarse_samples coarse_samples(const Indexed_triangles& mesh, const Distance_to_s
   return coarse;
 }
 
-/// Flags over the triangles of `mesh`: those with a coarse sample farther than
-/// `sqrt(squared_limit)` (their centroid, an edge midpoint, or a corner when the vertices are
-/// sampled), or with a fine sample of `fine` that is.
-inline std::vector<bool> triangles_beyond(const Indexed_triangles& mesh, const Coarse_samples& coarse,
-                                          const Distance_samples& fine, double squared_limit)
+/// The distances measured on a mesh: first its coarse samples, then the fine ones near the bound,
+/// on its triangles and along its edges.
+struct Mesh_samples
 {
-  std::vector<bool> vertex_beyond(mesh.points.size(), false), edge_beyond(mesh.edges.size(), false);
-  std::vector<bool> beyond(mesh.corners.size(), false);
-  coarse.vertices.mark_beyond(squared_limit, vertex_beyond);
-  coarse.midpoints.mark_beyond(squared_limit, edge_beyond);
-  coarse.centroids.mark_beyond(squared_limit, beyond);
-  fine.mark_beyond(squared_limit, beyond);
+  Coarse_samples coarse;
+  Distance_samples fine_triangles, fine_edges;
+};
+
+/// Flags over the edges of `mesh` with a sample of `samples` farther than `sqrt(squared_limit)`.
+inline std::vector<bool> edges_beyond(const Indexed_triangles& mesh, const Mesh_samples& samples, double squared_limit)
+{
+  std::vector<bool> beyond(mesh.edges.size(), false);
+  samples.coarse.midpoints.mark_beyond(squared_limit, beyond);
+  samples.fine_edges.mark_beyond(squared_limit, beyond);
+  return beyond;
+}
+
+/// Flags over the triangles of `mesh` with a sample of `samples` farther than
+/// `sqrt(squared_limit)`: their centroid, a corner or a point of a side when those are sampled,
+/// or a fine sample on them.
+inline std::vector<bool> triangles_beyond(const Indexed_triangles& mesh, const Mesh_samples& samples, double squared_limit)
+{
+  std::vector<bool> vertex_beyond(mesh.points.size(), false), beyond(mesh.corners.size(), false);
+  const std::vector<bool> edge_beyond = edges_beyond(mesh, samples, squared_limit);
+  samples.coarse.vertices.mark_beyond(squared_limit, vertex_beyond);
+  samples.coarse.centroids.mark_beyond(squared_limit, beyond);
+  samples.fine_triangles.mark_beyond(squared_limit, beyond);
   for(std::size_t t = 0; t < mesh.corners.size(); ++t)
     for(int k = 0; k < 3; ++k)
       if(vertex_beyond[mesh.corners[t][k]] || edge_beyond[mesh.sides[t][k]])
@@ -279,33 +296,64 @@ inline std::vector<bool> triangles_beyond(const Indexed_triangles& mesh, const C
   return beyond;
 }
 
-/// The fine samples of the triangles (and, with `with_edges`, the edges) of `mesh` whose coarse
-/// samples come within half the bound of it, measured against `surface`: on a grid `spacing`
-/// apart.
-template <typename ConcurrencyTag>
-void sample_near_bound(const Indexed_triangles& mesh, const Coarse_samples& coarse, const Distance_to_surface& surface,
-                       double squared_half, double spacing, bool with_edges, Distance_samples& fine_triangles,
-                       Distance_samples& fine_edges)
+/// Whether triangle `t` of `mesh` is narrower than `spacing` (a CAD sliver).
+inline bool is_narrow(const Indexed_triangles& mesh, std::size_t t, double spacing)
 {
-  const std::vector<bool> near = triangles_beyond(mesh, coarse, Distance_samples(), squared_half);
+  const std::array<std::size_t, 3>& c = mesh.corners[t];
+  const Fast_point &a = mesh.points[c[0]], &b = mesh.points[c[1]], &d = mesh.points[c[2]];
+  const double longest = std::sqrt((std::max)((std::max)(CGAL::squared_distance(a, b), CGAL::squared_distance(b, d)),
+                                              CGAL::squared_distance(d, a)));
+  return 2. * std::sqrt(CGAL::squared_area(a, b, d)) < spacing * longest;
+}
+
+/// The samples of `mesh` measured against `surface`: the coarse ones (the vertices and edge
+/// midpoints only `with_edges`), then, where they come within half the bound, fine ones a
+/// `spacing` apart: on a grid over each triangle whose centroid does, and along each edge whose
+/// midpoint does. With `with_edges`, a narrow triangle is sampled along its sides instead (every
+/// point of it is within `spacing` of them), each side once for all the triangles on it.
+///
+/// A corner or a side near the bound does not make a triangle's interior sampled: on a surface
+/// meshed by chords whose ends lie on it, a flat face stands farthest from them along its
+/// creases and at its corners, which the edges' samples find; inside a face, only where the
+/// chords span a face narrower than themselves (a groove), whose centroid then stands off too.
+template <typename ConcurrencyTag>
+Mesh_samples measured_samples(const Indexed_triangles& mesh, const Distance_to_surface& surface, bool with_edges,
+                              double squared_half, double spacing)
+{
+  Mesh_samples samples;
+  samples.coarse = coarse_samples<ConcurrencyTag>(mesh, surface, with_edges);
+  std::vector<bool> near(mesh.corners.size(), false);
+  samples.coarse.centroids.mark_beyond(squared_half, near);
+  std::vector<bool> edge_near = edges_beyond(mesh, samples, squared_half);
   for(std::size_t t = 0; t < near.size(); ++t)
     if(near[t])
-      add_triangle_samples(mesh, t, spacing, fine_triangles);
+    {
+      if(with_edges && is_narrow(mesh, t, spacing))
+        for(std::size_t e : mesh.sides[t])
+          edge_near[e] = true;
+      else
+        add_triangle_samples(mesh, t, spacing, samples.fine_triangles);
+    }
   if(with_edges)
-    for(std::size_t i = 0; i < coarse.midpoints.points.size(); ++i)
-      if(coarse.midpoints.squared[i] > squared_half)
-        add_edge_samples(mesh, coarse.midpoints.element[i], spacing, fine_edges);
-  fine_triangles.template measure<ConcurrencyTag>(surface);
-  fine_edges.template measure<ConcurrencyTag>(surface);
+    for(std::size_t e = 0; e < edge_near.size(); ++e)
+      if(edge_near[e])
+        add_edge_samples(mesh, e, spacing, samples.fine_edges);
+  samples.fine_triangles.template measure<ConcurrencyTag>(surface);
+  samples.fine_edges.template measure<ConcurrencyTag>(surface);
+  return samples;
 }
 
 /// The samples of `output` and of `input` farther from the other than `bound`: the output's
 /// faces (their corners lie on the input) and the input's vertices, edges (where the output cuts
-/// a crease or rounds off a tip) and faces. Every vertex of the input, every edge midpoint and
-/// every face centroid of both is measured once; the faces with such a sample (or, for the
-/// input's faces, a corner) within half the bound of it, and the input's edges whose midpoint is,
-/// are sampled again on a grid `spacing` apart. `to_input` measures distances to `input`. The
-/// places are thinned to one per cell of `spacing`.
+/// a crease or rounds off a tip) and faces. Every face centroid of both, and every vertex and
+/// edge midpoint of the input, is measured once; the faces with such a sample (or, for the
+/// input's faces, a corner or an edge midpoint) within half the bound of it, and the input's
+/// edges whose midpoint is, are sampled again on a grid `spacing` apart. The output's edge
+/// midpoints are not sampled first: a chord that cuts a crease under an edge's midpoint by the
+/// bound has the centroids of its faces about two thirds as far off, beyond half the bound, and
+/// the closest points on the input, a CAD part's fans of slivers, are the expensive queries.
+/// `to_input` measures distances to `input`. The places are thinned to one per cell of
+/// `spacing`.
 template <typename ConcurrencyTag, typename InputMesh, typename OutputMesh>
 Places_beyond_distance places_beyond_distance(const InputMesh& input, const Distance_to_surface& to_input,
                                               const OutputMesh& output, double bound, double spacing)
@@ -323,31 +371,29 @@ Places_beyond_distance places_beyond_distance(const InputMesh& input, const Dist
     }
   };
   const auto count = [](const std::vector<bool>& flags) { return std::size_t(std::count(flags.begin(), flags.end(), true)); };
+  const auto add_all_places = [&](const Mesh_samples& samples) {
+    for(const Distance_samples* s : {&samples.coarse.vertices, &samples.coarse.midpoints, &samples.coarse.centroids,
+                                     &samples.fine_triangles, &samples.fine_edges})
+      add_places(*s);
+  };
 
   // The output's faces, against the input (their corners lie on it).
   const Indexed_triangles out = indexed_triangles(output);
-  const Coarse_samples out_coarse = coarse_samples<ConcurrencyTag>(out, to_input, false);
-  Distance_samples out_fine, no_edges;
-  sample_near_bound<ConcurrencyTag>(out, out_coarse, to_input, squared_half, spacing, false, out_fine, no_edges);
-  result.output_faces = count(triangles_beyond(out, out_coarse, out_fine, squared_bound));
-  for(const Distance_samples* samples : std::initializer_list<const Distance_samples*>{&out_coarse.midpoints, &out_coarse.centroids, &out_fine})
-    add_places(*samples);
+  const Mesh_samples out_samples = measured_samples<ConcurrencyTag>(out, to_input, false, squared_half, spacing);
+  result.output_faces = count(triangles_beyond(out, out_samples, squared_bound));
+  add_all_places(out_samples);
 
   // The input's vertices, edges and faces, against the output.
   const Indexed_triangles in = indexed_triangles(input);
   const Distance_to_surface to_output(output);
-  const Coarse_samples in_coarse = coarse_samples<ConcurrencyTag>(in, to_output, true);
-  Distance_samples in_fine, in_fine_edges;
-  sample_near_bound<ConcurrencyTag>(in, in_coarse, to_output, squared_half, spacing, true, in_fine, in_fine_edges);
-  std::vector<bool> vertex_beyond(in.points.size(), false), edge_beyond(in.edges.size(), false);
-  in_coarse.vertices.mark_beyond(squared_bound, vertex_beyond);
-  in_coarse.midpoints.mark_beyond(squared_bound, edge_beyond);
-  in_fine_edges.mark_beyond(squared_bound, edge_beyond);
+  const Mesh_samples in_samples = measured_samples<ConcurrencyTag>(in, to_output, true, squared_half, spacing);
+  std::vector<bool> vertex_beyond(in.points.size(), false);
+  in_samples.coarse.vertices.mark_beyond(squared_bound, vertex_beyond);
+  const std::vector<bool> edge_beyond = edges_beyond(in, in_samples, squared_bound);
   result.input_vertices = count(vertex_beyond);
   result.input_edges = count(edge_beyond);
-  result.input_faces = count(triangles_beyond(in, in_coarse, in_fine, squared_bound));
-  for(const Distance_samples* samples : std::initializer_list<const Distance_samples*>{&in_coarse.vertices, &in_coarse.midpoints, &in_coarse.centroids, &in_fine, &in_fine_edges})
-    add_places(*samples);
+  result.input_faces = count(triangles_beyond(in, in_samples, squared_bound));
+  add_all_places(in_samples);
   // An input edge beyond the bound somewhere is a crease the output cuts there; where it does
   // not cut it this time is chance (where the output's vertices fell), so the whole edge
   // becomes places: a CAD edge is then meshed finer along its length at once, a scan's short
