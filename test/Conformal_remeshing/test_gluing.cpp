@@ -271,6 +271,28 @@ TEST(SurfaceDistance, PlacesBeyondTheBoundBothWays)
   EXPECT_LT(same.largest, 1e-12);
 }
 
+TEST(SurfaceDistance, ARoundIsKeptWhenItsLargestDistanceOrItsCountBeyondFalls)
+{
+  // The output before the round: largest distance 2, three elements beyond the bound.
+  CGAL::Conformal_remeshing::Remeshing_report before;
+  before.largest_surface_distance = 2.;
+  before.output_faces_beyond_surface_distance = 1;
+  before.input_edges_beyond_surface_distance = 2;
+  RM::Places_beyond_distance after;
+  after.largest = 1.5; // closer at its farthest, though with more elements beyond
+  after.input_faces = 5;
+  EXPECT_TRUE(RM::brought_closer(after, before));
+  after.largest = 3.; // farther at its farthest, but only two elements beyond
+  after.input_faces = 0;
+  after.input_vertices = 2;
+  EXPECT_TRUE(RM::brought_closer(after, before));
+  after.input_vertices = 3; // as far and as many: no closer
+  after.largest = 2.;
+  EXPECT_FALSE(RM::brought_closer(after, before));
+  after.largest = 2.5; // farther, and as many
+  EXPECT_FALSE(RM::brought_closer(after, before));
+}
+
 TEST(SurfaceDistance, PlacesStillTooFarAreRefinedFurther)
 {
   // A place near an earlier one gets half its size; a place far from all earlier ones, half the

@@ -60,6 +60,8 @@ public:
   template <typename Concurrency_tag>
   std::vector<double> squared_distances(const std::vector<Fast::Point_3>& points) const
   {
+    if(points.empty()) // (CGAL's property map over a vector takes its first element's address)
+      return {};
     std::vector<std::size_t> order(points.size());
     std::iota(order.begin(), order.end(), std::size_t(0));
     const auto point_of_index = CGAL::make_property_map(points);
