@@ -22,6 +22,7 @@
 #include <cmath>
 #include <cstdint>
 #include <initializer_list>
+#include <limits>
 #include <map>
 #include <set>
 #include <vector>
@@ -239,24 +240,54 @@ struct Coarse_samples
 
 /// The coarse samples of `mesh`, measured against `surface`: the centroids, and the vertices and
 /// edge midpoints only when `with_vertices_and_edges`.
+///
+/// With the vertices, a midpoint or a centroid is measured only where its vertices do not already
+/// bound its distance below `within` and below the farthest vertex's: the distance to a surface
+/// grows by at most the length moved, so a point at most `d(v) + |p - v|` away from a vertex `v`
+/// stands no farther than that. Such a point could neither be beyond `within` (half the bound:
+/// no place, no finer sampling) nor the largest distance, so leaving it out changes no result;
+/// on a tessellation finer than the target, most midpoints and centroids are left out.
 template <typename ConcurrencyTag>
-Coarse_samples coarse_samples(const Indexed_triangles& mesh, const Distance_to_surface& surface, bool with_vertices_and_edges)
+Coarse_samples coarse_samples(const Indexed_triangles& mesh, const Distance_to_surface& surface, bool with_vertices_and_edges,
+                              double within)
 {
   Coarse_samples coarse;
+  std::vector<double> vertex_distance;
+  double certain = -1.; // a point whose vertices bound its distance below this is not measured
   if(with_vertices_and_edges)
   {
     for(std::size_t v = 0; v < mesh.points.size(); ++v)
       if(mesh.used[v])
         coarse.vertices.add(mesh.points[v], v);
+    coarse.vertices.measure<ConcurrencyTag>(surface);
+    vertex_distance.assign(mesh.points.size(), 0.);
+    double farthest = 0.;
+    for(std::size_t i = 0; i < coarse.vertices.points.size(); ++i)
+    {
+      vertex_distance[coarse.vertices.element[i]] = std::sqrt(coarse.vertices.squared[i]);
+      farthest = (std::max)(farthest, coarse.vertices.squared[i]);
+    }
+    certain = 0.99 * (std::min)(within, std::sqrt(farthest)); // a margin for the rounding
     for(std::size_t e = 0; e < mesh.edges.size(); ++e)
-      coarse.midpoints.add(CGAL::midpoint(mesh.points[mesh.edges[e][0]], mesh.points[mesh.edges[e][1]]), e);
+    {
+      const std::size_t a = mesh.edges[e][0], b = mesh.edges[e][1];
+      const double bound = (std::min)(vertex_distance[a], vertex_distance[b])
+                           + 0.5 * std::sqrt(CGAL::squared_distance(mesh.points[a], mesh.points[b]));
+      if(!(bound < certain))
+        coarse.midpoints.add(CGAL::midpoint(mesh.points[a], mesh.points[b]), e);
+    }
   }
   for(std::size_t t = 0; t < mesh.corners.size(); ++t)
   {
     const std::array<std::size_t, 3>& c = mesh.corners[t];
-    coarse.centroids.add(CGAL::centroid(mesh.points[c[0]], mesh.points[c[1]], mesh.points[c[2]]), t);
+    const Fast_point g = CGAL::centroid(mesh.points[c[0]], mesh.points[c[1]], mesh.points[c[2]]);
+    double bound = std::numeric_limits<double>::infinity();
+    if(with_vertices_and_edges)
+      for(std::size_t v : c)
+        bound = (std::min)(bound, vertex_distance[v] + std::sqrt(CGAL::squared_distance(mesh.points[v], g)));
+    if(!(bound < certain))
+      coarse.centroids.add(g, t);
   }
-  coarse.vertices.measure<ConcurrencyTag>(surface);
   coarse.midpoints.measure<ConcurrencyTag>(surface);
   coarse.centroids.measure<ConcurrencyTag>(surface);
   return coarse;
@@ -321,7 +352,7 @@ Mesh_samples measured_samples(const Indexed_triangles& mesh, const Distance_to_s
                               double squared_half, double spacing)
 {
   Mesh_samples samples;
-  samples.coarse = coarse_samples<ConcurrencyTag>(mesh, surface, with_edges);
+  samples.coarse = coarse_samples<ConcurrencyTag>(mesh, surface, with_edges, std::sqrt(squared_half));
   std::vector<bool> near(mesh.corners.size(), false);
   samples.coarse.centroids.mark_beyond(squared_half, near);
   std::vector<bool> edge_near = edges_beyond(mesh, samples, squared_half);
