@@ -162,6 +162,11 @@ namespace Conformal_remeshing {
 ///     \cgalParamType{`std::reference_wrapper<std::vector<Surface_location> >`}
 ///     \cgalParamDefault{not written}
 ///   \cgalParamNEnd
+///   \cgalParamNBegin{flattened_patch_visitor}
+///     \cgalParamDescription{called with every patch that the meshing stage meshes (after the bisections, and without the sharp features when the `features_fallback` dropped them) and its flattening, in patch order, once they are all flattened and before any is meshed: how to look at the patches and their planar domains (the tool's `--save-patches` writes them). A batch of components (`batch_faces`) shows its own patches; batches whose outputs cross each other and are remeshed together show theirs again}
+///     \cgalParamType{a callable `void(const Extracted_patch&, const Conformal_flattening&)`}
+///     \cgalParamDefault{none}
+///   \cgalParamNEnd
 ///   \cgalParamNBegin{statistics}
 ///     \cgalParamDescription{an output: receives the timings and counters of the stages (see `Remeshing_statistics`); pass it as `std::ref(statistics)`}
 ///     \cgalParamType{`std::reference_wrapper<Remeshing_statistics>`}

@@ -61,7 +61,7 @@ inline const char* const usage =
   "                          (default 40; 0: none)\n"
   "  --patches FILE          user patches: one integer patch id per face of IN, in face order\n"
   "  --cut-plane a,b,c,d     cut the surface by the plane ax+by+cz+d=0 first (repeatable)\n"
-  "  --save-patches DIR      DIR/patch_N.off and DIR/patch_N_flattening.svg for every patch (DIR is created)\n"
+  "  --save-patches DIR      DIR/patch_N.off and DIR/patch_N_flattening.svg for every patch meshed (DIR is created)\n"
   "  --sequential            one patch at a time (default: in parallel when built with TBB)\n"
   "  --report FILE.json      stage times, segmentation and flattening, quality of input and output, fidelity\n"
   "  --plots DIR             DIR/quality.svg: angle and skewness histograms, input and output (DIR is created)\n"
@@ -333,52 +333,29 @@ inline int run(int argc, char** argv, const CGAL::Conformal_remeshing::internal:
                                                  o.planes, CR::parameters::features_fallback(
                                                              !o.features_angle_given, CR::parameters::progress(progress, CGAL::parameters::face_patch_map(patch_of)))))))))))));
 
-  if(!o.save_patches.empty())
-  {
-    try
-    {
-      progress("saving the patches to " + o.save_patches);
-      // The patches remesh_conformal() meshes: the segmentation's, and the halves of those whose
-      // flattening fails or stretches too much.
-      CR::Poly_annulus_segmentation segmentation;
-      CR::segment_into_poly_annuli(input, segmentation, CR::parameters::snap_distance(0.1 * target, np));
-      CR::Flattened_poly_annuli flattened;
-      CR::flatten_poly_annuli(segmentation, flattened,
-                              CR::parameters::maximum_edge_length(
-                                2. * target, CR::parameters::snap_distance(
-                                               0.1 * target, CR::parameters::maximum_running_time(remaining_time(), np))));
-      for(std::size_t p = 0; p < flattened.patches.size(); ++p)
-      {
-        const std::string name = o.save_patches + "/patch_" + std::to_string(p);
-        tools::write_file_atomically_at(name + ".off", [&](const std::string& temporary) {
-          return CGAL::IO::write_polygon_mesh(temporary, flattened.patches[p].mesh, CGAL::parameters::stream_precision(17));
-        });
-        tools::write_file_atomically(name + "_flattening.svg", tools::welded_domain_svg(flattened.flattenings[p]));
-      }
-    }
-    catch(const CR::Error& e)
-    {
-      if(e.code() == CR::Error_code::TIME_LIMIT_EXCEEDED)
-        return out_of_time(e.what());
-      std::cerr << tool_message(e.what()) << "\n";
-      return 1;
-    }
-    catch(const std::exception& e)
-    {
-      std::cerr << tool_message(e.what()) << "\n";
-      return 2;
-    }
-  }
-
   Mesh output;
   CR::Remeshing_report report;
   CR::Remeshing_statistics statistics;
   try
   {
     progress("remeshing " + std::to_string(input.number_of_faces()) + " faces");
-    const auto limited = CR::parameters::patch_job_runner(runner, CR::parameters::repair_input(
+    // --save-patches: the patches that the meshing stage meshes, numbered across batches.
+    std::size_t saved_patches = 0;
+    const std::function<void(const CR::Extracted_patch&, const CR::Conformal_flattening&)> save_patch =
+      [&](const CR::Extracted_patch& patch, const CR::Conformal_flattening& flattening) {
+        if(o.save_patches.empty())
+          return;
+        if(saved_patches == 0)
+          progress("saving the patches to " + o.save_patches);
+        const std::string name = o.save_patches + "/patch_" + std::to_string(saved_patches++);
+        tools::write_file_atomically_at(name + ".off", [&](const std::string& temporary) {
+          return CGAL::IO::write_polygon_mesh(temporary, patch.mesh, CGAL::parameters::stream_precision(17));
+        });
+        tools::write_file_atomically(name + "_flattening.svg", tools::welded_domain_svg(flattening));
+      };
+    const auto limited = CR::parameters::flattened_patch_visitor(save_patch, CR::parameters::patch_job_runner(runner, CR::parameters::repair_input(
       o.repair, CR::parameters::statistics(std::ref(statistics), CR::parameters::batch_faces(
-                                             std::size_t(o.batch_faces), CR::parameters::maximum_running_time(remaining_time(), np)))));
+                                             std::size_t(o.batch_faces), CR::parameters::maximum_running_time(remaining_time(), np))))));
     report = o.sequential ? CR::remesh_conformal<CGAL::Sequential_tag>(input, output, limited)
                           : CR::remesh_conformal<CGAL::Parallel_if_available_tag>(input, output, limited);
   }
@@ -388,6 +365,11 @@ inline int run(int argc, char** argv, const CGAL::Conformal_remeshing::internal:
       return out_of_time(e.what());
     std::cerr << tool_message(e.what()) << "\n";
     return 1;
+  }
+  catch(const std::exception& e) // a patch that --save-patches could not write
+  {
+    std::cerr << tool_message(e.what()) << "\n";
+    return 2;
   }
   // What the remeshing took, before the measures (which on a large input can take longer).
   const double seconds_remeshed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();

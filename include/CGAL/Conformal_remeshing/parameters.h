@@ -90,6 +90,10 @@ CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(vertex_locations)
 // the meshing stage instead of this process's threads (the MPI tool remesh_conformal_mpi hands
 // them to other processes); the output is the same wherever the jobs run.
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(patch_job_runner)
+// `flattened_patch_visitor(f)`: `f`, a callable `void(const Extracted_patch&, const
+// Conformal_flattening&)`, is shown every patch that the meshing stage meshes, with its
+// flattening, once they are all flattened (what the tool's `--save-patches` writes).
+CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(flattened_patch_visitor)
 // Output of `remesh_conformal()`: `Remeshing_statistics`, the timings and counters of its stages
 // (`std::ref(statistics)`).
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(statistics)

@@ -71,6 +71,9 @@ inline void add_flattening_statistics(const Poly_annulus_segmentation& segmentat
 /// the flow resolves the map at twice the target edge length unless `np` says otherwise (finer on
 /// tubes: see `flow_edge_length()`), and snaps to cutting planes within a tenth of it.
 ///
+/// The `flattened_patch_visitor` of `np`, if any, is shown each final patch and its flattening,
+/// in patch order.
+///
 /// When a patch cannot be flattened even after bisection and the segmentation has sharp features,
 /// the surface is segmented again without them if `options.features_fallback` is on: features
 /// taken from noise bound patches that the bisections cannot flatten with a bounded scale, while
@@ -118,6 +121,10 @@ void segment_and_flatten(const TriangleMesh& input, const Remeshing_options& opt
     run(parameters::features_angle(0., parameters::snap_distance(snap, np)));
   }
   add_flattening_statistics(result.segmentation, flattened, report, statistics);
+  const auto visit = choose_parameter(get_parameter(np, internal_np::flattened_patch_visitor),
+                                      [](const Extracted_patch&, const Conformal_flattening&) {});
+  for(std::size_t p = 0; p < flattened.patches.size(); ++p)
+    visit(flattened.patches[p], flattened.flattenings[p]);
 
   std::vector<Flattened_patch> patches(flattened.patches.size());
   for_each_index<ConcurrencyTag>(patches.size(), [&](std::size_t p) {
