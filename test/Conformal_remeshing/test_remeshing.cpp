@@ -5,6 +5,7 @@
 #include "stage_tests.h"
 
 #include <atomic>
+#include <random>
 
 
 TEST(RemeshConformal, WavyConcaveStrip)
@@ -367,6 +368,47 @@ TEST(Sizing, ShorterNearThePlacesToMeshAgain)
   EXPECT_EQ(mixed.within(CGAL::Bbox_3(1.5, -1., -1., 2.5, 1., 1.), 0.2).sizes, std::vector<double>{0.1});
 }
 
+
+TEST(Sizing, ManyPlacesAreLookedUpByCellAsExactlyAsScanned)
+{
+  // Places of three sizes scattered over a box a few reaches wide, queried at random points and
+  // at the places themselves: below the cap the lookup gives the scan's very double, at or above
+  // it something at or above the cap.
+  namespace RM = CR::internal::remeshing;
+  std::mt19937 random(7);
+  std::uniform_real_distribution<double> coordinate(-3., 3.);
+  RM::Local_refinement places;
+  for(double size : {0.5, 0.25, 0.0625})
+  {
+    std::vector<K::Point_3> points;
+    for(int i = 0; i < 100; ++i)
+      points.emplace_back(coordinate(random), coordinate(random), 0.1 * coordinate(random));
+    places.add(points, size);
+  }
+  const double cap = 1.;
+  const RM::Local_refinement_lookup lookup(places, cap);
+  std::vector<K::Point_3> queries = places.points;
+  for(int i = 0; i < 5000; ++i)
+    queries.emplace_back(1.5 * coordinate(random), 1.5 * coordinate(random), coordinate(random));
+  std::size_t below_cap = 0;
+  for(const K::Point_3& q : queries)
+  {
+    const double scanned = places.at(q), looked_up = lookup.at(q);
+    if(scanned < cap)
+    {
+      ++below_cap;
+      ASSERT_EQ(looked_up, scanned) << q;
+    }
+    else
+      ASSERT_GE(looked_up, cap) << q;
+  }
+  EXPECT_GT(below_cap, 1000u);
+  EXPECT_LT(below_cap, queries.size()); // some queries are beyond every reach
+  // Few places are scanned.
+  RM::Local_refinement two;
+  two.add({K::Point_3(0., 0., 0.), K::Point_3(4., 0., 0.)}, 0.5);
+  EXPECT_EQ(RM::Local_refinement_lookup(two, cap).at(K::Point_3(2., 0., 0.)), 1.5);
+}
 
 TEST(RemeshConformal, LocationsInSliversAreExact)
 {

@@ -306,6 +306,8 @@ struct Patch_job_serialization
     transfer(a, s.refinement_.points);
     transfer(a, s.refinement_.sizes);
     transfer(a, s.refinement_.gradation);
+    if(Archive::reading)
+      s.places_ = Local_refinement_lookup(s.refinement_, s.target_);
     transfer(a, s.face_corners_);
   }
 };

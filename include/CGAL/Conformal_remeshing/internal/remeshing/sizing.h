@@ -20,6 +20,7 @@
 #include <limits>
 #include <map>
 #include <queue>
+#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -104,6 +105,93 @@ struct Local_refinement
   }
 };
 
+/// `Local_refinement::at()` for many points, in a time that does not grow with the number of
+/// places: only the bound below `cap` matters (the sizes are bounded to the target), and a place
+/// of size `s` bounds nothing below `cap` farther than its reach `(cap - s) / gradation`. The
+/// places are hashed into cells of the largest reach; a query looks at its cell and the 26 around
+/// it. Below `cap`, `at()` is exactly `Local_refinement::at()` (the same expression, place by
+/// place, and the smallest of them); at or above it, some value at or above `cap`. Few places
+/// are scanned as they are.
+class Local_refinement_lookup
+{
+public:
+  Local_refinement_lookup() = default;
+  Local_refinement_lookup(const Local_refinement& refinement, double cap) : gradation_(refinement.gradation)
+  {
+    const std::vector<double>& sizes = refinement.sizes;
+    const double smallest = sizes.empty() ? 0. : *std::min_element(sizes.begin(), sizes.end());
+    if(sizes.size() < minimum_places_for_cells || !(refinement.gradation > 0.) || !(smallest < 0.999 * cap))
+    {
+      points_ = refinement.points; // scanned: few, or reaching about as far as the cap
+      sizes_ = sizes;
+      return;
+    }
+    cell_ = (cap - smallest) / refinement.gradation * (1. + 1e-9); // a margin for the rounding of the distances
+    std::vector<std::pair<Key, std::size_t> > keyed(sizes.size());
+    for(std::size_t i = 0; i < sizes.size(); ++i)
+      keyed[i] = {key(cell_of(refinement.points[i])), i};
+    std::sort(keyed.begin(), keyed.end());
+    for(std::size_t k = 0; k < keyed.size(); ++k)
+    {
+      if(k == 0 || keyed[k].first != keyed[k - 1].first)
+        cells_.emplace(keyed[k].first, std::make_pair(k, k));
+      ++cells_[keyed[k].first].second;
+      points_.push_back(refinement.points[keyed[k].second]);
+      sizes_.push_back(sizes[keyed[k].second]);
+    }
+  }
+
+  double at(const Epick::Point_3& p) const
+  {
+    if(cells_.empty())
+      return smallest_bound(p, 0, points_.size());
+    const std::array<long, 3> c = cell_of(p);
+    double bound = std::numeric_limits<double>::infinity();
+    for(long dx = -1; dx <= 1; ++dx)
+      for(long dy = -1; dy <= 1; ++dy)
+        for(long dz = -1; dz <= 1; ++dz)
+        {
+          const auto found = cells_.find(key({c[0] + dx, c[1] + dy, c[2] + dz}));
+          if(found != cells_.end())
+            bound = (std::min)(bound, smallest_bound(p, found->second.first, found->second.second));
+        }
+    // The places of the other cells are more than a cell, a reach, away: their bounds are above
+    // the cap.
+    return bound;
+  }
+
+private:
+  typedef unsigned long long Key;
+  static constexpr std::size_t minimum_places_for_cells = 64;
+
+  // The expression of `Local_refinement::at()`, over places `first` to `last`.
+  double smallest_bound(const Epick::Point_3& p, std::size_t first, std::size_t last) const
+  {
+    double bound = std::numeric_limits<double>::infinity();
+    for(std::size_t i = first; i < last; ++i)
+      bound = (std::min)(bound, sizes_[i] + gradation_ * std::sqrt(CGAL::squared_distance(p, points_[i])));
+    return bound;
+  }
+  std::array<long, 3> cell_of(const Epick::Point_3& p) const
+  {
+    const auto index = [&](double x) { return long((std::max)(-1e15, (std::min)(1e15, std::floor(x / cell_)))); };
+    return {index(p.x()), index(p.y()), index(p.z())};
+  }
+  // 21 bits a coordinate: cells that differ by a multiple of 2^21 share a key, which costs
+  // distance computations, never a place.
+  static Key key(const std::array<long, 3>& c)
+  {
+    const Key mask = (Key(1) << 21) - 1;
+    return (Key(c[0]) & mask) | ((Key(c[1]) & mask) << 21) | ((Key(c[2]) & mask) << 42);
+  }
+
+  double gradation_ = 0.5;
+  double cell_ = 0.;
+  std::vector<Epick::Point_3> points_; // by cell when there are cells
+  std::vector<double> sizes_;
+  std::unordered_map<Key, std::pair<std::size_t, std::size_t> > cells_; // ranges of `points_`
+};
+
 /// The size the user's `field` and `refinement` give at `p`, before bounding (see
 /// `bounded_size()`): the smaller of the two, infinite where neither is given.
 inline double field_size(const std::function<double(const Epick::Point_3&)>& field, const Local_refinement& refinement,
@@ -112,6 +200,15 @@ inline double field_size(const std::function<double(const Epick::Point_3&)>& fie
   if(refinement.empty())
     return field ? field(p) : std::numeric_limits<double>::infinity();
   const double local = refinement.at(p);
+  return field ? (std::min)(field(p), local) : local;
+}
+
+/// `field_size()` with the refinement's places looked up in `places` (capped at the target: what
+/// `bounded_size()` makes of it is the same).
+inline double field_size(const std::function<double(const Epick::Point_3&)>& field, const Local_refinement_lookup& places,
+                         const Epick::Point_3& p)
+{
+  const double local = places.at(p);
   return field ? (std::min)(field(p), local) : local;
 }
 
@@ -135,7 +232,8 @@ public:
   explicit Patch_size_field(double target = 0.) : target_(target) {}
   Patch_size_field(double target, double gradation, const Field& field, const Local_refinement& refinement,
                    std::vector<std::array<Corner, 3> > face_corners)
-    : target_(target), gradation_(gradation), field_(field), refinement_(refinement), face_corners_(std::move(face_corners))
+    : target_(target), gradation_(gradation), field_(field), refinement_(refinement), places_(refinement_, target),
+      face_corners_(std::move(face_corners))
   {}
 
   double target() const { return target_; }
@@ -154,7 +252,7 @@ private:
   double graded(const Epick::Point_3& p, const Corner& c) const { return graded_size(p, c.point, c.size, target_, gradation_); }
   double of_field(const Epick::Point_3& p) const
   {
-    return field_ || !refinement_.empty() ? bounded_size(field_size(field_, refinement_, p), target_) : target_;
+    return field_ || !refinement_.empty() ? bounded_size(field_size(field_, places_, p), target_) : target_;
   }
 
   friend bool same_sizes(const Patch_size_field& a, const Patch_size_field& b)
@@ -177,6 +275,7 @@ private:
   double gradation_ = 0.5;
   Field field_;
   Local_refinement refinement_;
+  Local_refinement_lookup places_; // of `refinement_`
   std::vector<std::array<Corner, 3> > face_corners_; // empty when uniform
 
   friend struct Patch_job_serialization; // writes the field as bytes (patch_job_io.h)
@@ -209,7 +308,7 @@ public:
   Sizing(const Poly_annulus_segmentation& s, double target, const Field& field, double chord_error,
          const Local_refinement& refinement = Local_refinement(), const std::vector<double>& gaps = std::vector<double>(),
          double gradation = 0.5)
-    : s_(s), target_(target), field_(field), refinement_(refinement), gradation_(gradation)
+    : s_(s), target_(target), field_(field), refinement_(refinement), places_(refinement_, target), gradation_(gradation)
   {
     const bool has_gaps = std::any_of(gaps.begin(), gaps.end(), [](double gap) { return std::isfinite(gap); });
     if(!has_field() && !(chord_error > 0.) && !has_gaps)
@@ -218,7 +317,7 @@ public:
     vertex_size_.assign(m.number_of_vertices(), target);
     if(has_field())
       for(Vertex v : m.vertices())
-        vertex_size_[v] = bounded(field_size(field_, refinement_, m.point(v)));
+        vertex_size_[v] = bounded(field_size(field_, places_, m.point(v)));
     if(chord_error > 0. || has_gaps)
       bound_by_curvature(chord_error, has_gaps ? gaps : std::vector<double>());
     grade(gradation);
@@ -294,7 +393,7 @@ private:
   }
 
   bool has_field() const { return field_ || !refinement_.empty(); }
-  double of_field(const Epick::Point_3& p) const { return has_field() ? bounded(field_size(field_, refinement_, p)) : target_; }
+  double of_field(const Epick::Point_3& p) const { return has_field() ? bounded(field_size(field_, places_, p)) : target_; }
   double bounded(double size) const { return bounded_size(size, target_); }
 
   // Whether the normals of the faces on the two sides of `e` are kept apart: a sharp feature
@@ -427,6 +526,7 @@ private:
   double target_;
   Field field_;
   Local_refinement refinement_;
+  Local_refinement_lookup places_; // of `refinement_`
   double gradation_ = 0.5;
   std::vector<double> vertex_size_; // empty when uniform
   std::size_t gap_bounded_vertices_ = 0;
