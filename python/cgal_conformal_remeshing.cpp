@@ -510,6 +510,12 @@ py::dict to_dict(const CR::Remeshing_report& r)
   d["places_beyond_surface_distance"] = r.places_beyond_surface_distance;
   d["surface_distance_rounds_dropped"] = r.surface_distance_rounds_dropped;
   d["largest_surface_distance"] = r.largest_surface_distance;
+  d["largest_surface_distance_point"] =
+    py::make_tuple(r.largest_surface_distance_point[0], r.largest_surface_distance_point[1], r.largest_surface_distance_point[2]);
+  py::list still_beyond;
+  for(const std::array<double, 3>& p : r.places_still_beyond_surface_distance)
+    still_beyond.append(py::make_tuple(p[0], p[1], p[2]));
+  d["places_still_beyond_surface_distance"] = still_beyond;
   d["output_faces_beyond_surface_distance"] = r.output_faces_beyond_surface_distance;
   d["input_vertices_beyond_surface_distance"] = r.input_vertices_beyond_surface_distance;
   d["input_edges_beyond_surface_distance"] = r.input_edges_beyond_surface_distance;

@@ -126,6 +126,15 @@ def test_surface_distance_is_passed_on_and_reported(plate):
                 "input_edges_beyond_surface_distance", "input_faces_beyond_surface_distance"):
         assert key in bounded, key
     assert "seconds_surface_distance" in bounded["statistics"]
+    # Where: the farthest sample, and the places still beyond (one per element beyond at most).
+    assert len(default["largest_surface_distance_point"]) == 3
+    lo, hi = V.min(axis=0) - h, V.max(axis=0) + h
+    assert all(lo[k] <= default["largest_surface_distance_point"][k] <= hi[k] for k in range(3))
+    places = bounded["places_still_beyond_surface_distance"]
+    beyond = sum(bounded[key] for key in ("output_faces_beyond_surface_distance", "input_vertices_beyond_surface_distance",
+                                          "input_edges_beyond_surface_distance", "input_faces_beyond_surface_distance"))
+    assert (len(places) > 0) == (beyond > 0)
+    assert all(len(p) == 3 for p in places)
 
 
 def test_features_angle_is_passed_on(plate, remeshed_plate):

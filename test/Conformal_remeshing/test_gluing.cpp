@@ -230,6 +230,8 @@ TEST(SurfaceDistance, PlacesBeyondTheBoundBothWays)
 
   const RM::Places_beyond_distance far = RM::places_beyond_distance<CGAL::Sequential_tag>(ridge, to_ridge, flat, 0.06, 0.25);
   EXPECT_NEAR(far.largest, d, 1e-12);
+  EXPECT_NEAR(far.farthest.x(), 1., 1e-12) << far.farthest; // on the ridge
+  EXPECT_NEAR(far.farthest.z(), d, 1e-12) << far.farthest;
   EXPECT_EQ(far.output_faces, 2u);
   EXPECT_EQ(far.input_vertices, 2u);  // the ridge's
   EXPECT_EQ(far.input_faces, 4u);     // each has a corner on the ridge

@@ -413,6 +413,25 @@ TEST(RemeshAnyTopology, TheSurfaceDistanceBoundMeshesACutChamferAgainFiner)
   ASSERT_EQ(unchanged.number_of_vertices(), cut.number_of_vertices());
   for(Mesh::Vertex_index v : cut.vertices())
     EXPECT_EQ(unchanged.point(v), cut.point(v));
+  EXPECT_TRUE(with.places_still_beyond_surface_distance.empty());
+  EXPECT_TRUE(kept.places_still_beyond_surface_distance.empty());
+
+  // A bound the rounds cannot reach: edges of a sixteenth of the target still cut the creases
+  // deeper. What stays beyond is reported with its places; the farthest is on a crease (y, z) =
+  // (7, 10) or (10, 7).
+  Mesh tight_output;
+  const CR::Remeshing_report tight = CGAL::remesh_conformal(
+    box, tight_output, CR::parameters::maximum_surface_distance(1e-4 * h, CR::parameters::crease_angle(0.)));
+  EXPECT_GT(tight.input_edges_beyond_surface_distance, 0u);
+  ASSERT_FALSE(tight.places_still_beyond_surface_distance.empty());
+  EXPECT_LE(tight.places_still_beyond_surface_distance.size(), CR::Remeshing_report::max_reported_places);
+  const auto from_a_crease = [](const std::array<double, 3>& p) {
+    return (std::min)(std::hypot(p[1] - 7., p[2] - 10.), std::hypot(p[1] - 10., p[2] - 7.));
+  };
+  const std::array<double, 3>& farthest = tight.largest_surface_distance_point;
+  EXPECT_LT(from_a_crease(farthest), h) << farthest[0] << ", " << farthest[1] << ", " << farthest[2];
+  EXPECT_TRUE(std::any_of(tight.places_still_beyond_surface_distance.begin(), tight.places_still_beyond_surface_distance.end(),
+                          [&](const std::array<double, 3>& p) { return from_a_crease(p) < 0.25 * h; }));
 }
 
 TEST(RemeshAnyTopology, CreasesCloserThanATargetLengthStayInsideTheirPatch)

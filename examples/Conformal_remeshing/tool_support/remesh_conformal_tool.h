@@ -23,6 +23,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
+#include <array>
 #include <functional>
 #include <chrono>
 #include <cmath>
@@ -119,6 +120,14 @@ inline std::string tool_message(const std::string& what)
   if(what == std::bad_alloc().what())
     return prefix + "out of memory (" + std::to_string(std::lround(peak_resident_megabytes())) + " MB resident at the most)";
   return what.compare(0, prefix.size(), prefix) == 0 ? what : prefix + what;
+}
+
+// A point of the report as "(x, y, z)", with the stream's default precision.
+inline std::string point_text(const std::array<double, 3>& p)
+{
+  std::ostringstream text;
+  text << "(" << p[0] << ", " << p[1] << ", " << p[2] << ")";
+  return text.str();
 }
 
 inline bool parse_plane(const std::string& text, std::vector<K::Plane_3>& planes)
@@ -444,11 +453,24 @@ inline int run(int argc, char** argv, const CGAL::Conformal_remeshing::internal:
       json.key("surface_distance").begin_object().field("bound", report.surface_distance_bound)
           .field("refinements", report.surface_distance_refinements).field("places", report.places_beyond_surface_distance)
           .field("rounds_dropped", report.surface_distance_rounds_dropped)
-          .field("largest", report.largest_surface_distance)
-          .field("output_faces_beyond", report.output_faces_beyond_surface_distance)
+          .field("largest", report.largest_surface_distance);
+      json.key("largest_point").begin_array();
+      for(double c : report.largest_surface_distance_point)
+        json.value(c);
+      json.end_array().field("output_faces_beyond", report.output_faces_beyond_surface_distance)
           .field("input_vertices_beyond", report.input_vertices_beyond_surface_distance)
           .field("input_edges_beyond", report.input_edges_beyond_surface_distance)
-          .field("input_faces_beyond", report.input_faces_beyond_surface_distance).end_object();
+          .field("input_faces_beyond", report.input_faces_beyond_surface_distance);
+      // Where the output still strays (at most Remeshing_report::max_reported_places of them).
+      json.key("places_still_beyond").begin_array();
+      for(const std::array<double, 3>& place : report.places_still_beyond_surface_distance)
+      {
+        json.begin_array();
+        for(double c : place)
+          json.value(c);
+        json.end_array();
+      }
+      json.end_array().end_object();
       json.key("frontal_insertion").begin_object().field("dropped", report.frontal_dropped)
           .field("fallback_reason", report.frontal_fallback_reason).end_object();
       json.key("flattening").begin_object().field("max_iterations", statistics.max_newton_iterations)
@@ -538,14 +560,19 @@ inline int run(int argc, char** argv, const CGAL::Conformal_remeshing::internal:
               << (report.surface_distance_rounds_dropped > 0
                     ? " (" + std::to_string(report.surface_distance_rounds_dropped) + " more dropped: their output intersected itself or was no closer)"
                     : std::string())
-              << "; largest distance found "
-              << report.largest_surface_distance << ", still beyond the bound: " << report.output_faces_beyond_surface_distance
+              << "; largest distance found " << report.largest_surface_distance << " at " << point_text(report.largest_surface_distance_point)
+              << ", still beyond the bound: " << report.output_faces_beyond_surface_distance
               << " output faces, " << report.input_vertices_beyond_surface_distance << " input vertices, "
               << report.input_edges_beyond_surface_distance << " input edges, " << report.input_faces_beyond_surface_distance
-              << " input faces\n";
+              << " input faces"
+              << (report.places_still_beyond_surface_distance.empty()
+                    ? std::string()
+                    : " (e.g. near " + point_text(report.places_still_beyond_surface_distance.front()) + "; --report lists "
+                        + std::to_string(report.places_still_beyond_surface_distance.size()) + " places)")
+              << "\n";
   if(std::isfinite(report.smallest_gap))
-    std::cout << "  sheets of the input " << report.smallest_gap << " apart at (" << report.smallest_gap_point[0] << ", "
-              << report.smallest_gap_point[1] << ", " << report.smallest_gap_point[2] << "); the gaps shortened the target at "
+    std::cout << "  sheets of the input " << report.smallest_gap << " apart at " << point_text(report.smallest_gap_point)
+              << "; the gaps shortened the target at "
               << report.gap_bounded_vertices << " input vertices\n";
   return 0;
 }

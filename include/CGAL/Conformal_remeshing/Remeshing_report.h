@@ -120,12 +120,19 @@ struct Remeshing_report
   /// samples of the check (the faces' centroids, the input's vertices and edge midpoints, and a
   /// grid a quarter target apart near the bound); 0 when there is no bound
   double largest_surface_distance = 0.;
+  /// where that largest distance was found: a sample of the output or of the input
+  std::array<double, 3> largest_surface_distance_point{{0., 0., 0.}};
   /// of the output: its faces, and the input's vertices, edges and faces, with a point still
   /// farther than the bound from the other after the last round
   std::size_t output_faces_beyond_surface_distance = 0;
   std::size_t input_vertices_beyond_surface_distance = 0;
   std::size_t input_edges_beyond_surface_distance = 0;
   std::size_t input_faces_beyond_surface_distance = 0;
+  /// where those are: the places still farther than the bound after the last round, about a
+  /// quarter target apart, at most `max_reported_places` of them (the first found): a crease
+  /// cut or a small feature rounded off that the rounds of meshing again could not keep
+  std::vector<std::array<double, 3> > places_still_beyond_surface_distance;
+  static constexpr std::size_t max_reported_places = 100;
   std::size_t refined_boundary_curves = 0; ///< times a boundary curve of a thin patch was sampled twice as densely
   std::size_t split_diagonals = 0; ///< times a patch split an edge between two samples that another patch also has
   /// batches of whole components the input was remeshed in (named parameter `batch_faces`;

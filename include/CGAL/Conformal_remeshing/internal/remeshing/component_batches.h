@@ -148,7 +148,14 @@ inline void add_batch_report(Remeshing_report& total, const Remeshing_report& ba
   total.surface_distance_refinements = (std::max)(total.surface_distance_refinements, batch.surface_distance_refinements);
   total.places_beyond_surface_distance += batch.places_beyond_surface_distance;
   total.surface_distance_rounds_dropped += batch.surface_distance_rounds_dropped;
-  total.largest_surface_distance = (std::max)(total.largest_surface_distance, batch.largest_surface_distance);
+  if(batch.largest_surface_distance > total.largest_surface_distance)
+  {
+    total.largest_surface_distance = batch.largest_surface_distance;
+    total.largest_surface_distance_point = batch.largest_surface_distance_point;
+  }
+  for(const std::array<double, 3>& place : batch.places_still_beyond_surface_distance)
+    if(total.places_still_beyond_surface_distance.size() < Remeshing_report::max_reported_places)
+      total.places_still_beyond_surface_distance.push_back(place);
   total.output_faces_beyond_surface_distance += batch.output_faces_beyond_surface_distance;
   total.input_vertices_beyond_surface_distance += batch.input_vertices_beyond_surface_distance;
   total.input_edges_beyond_surface_distance += batch.input_edges_beyond_surface_distance;

@@ -109,6 +109,10 @@ Places_beyond_distance check_surface_distance(const Flattened_surface& surface, 
   Places_beyond_distance far = places_beyond_distance<ConcurrencyTag>(
     surface.segmentation.mesh, *to_input, glued.mesh, options.maximum_surface_distance, 0.25 * options.target_edge_length);
   report.largest_surface_distance = far.largest;
+  report.largest_surface_distance_point = {{far.farthest.x(), far.farthest.y(), far.farthest.z()}};
+  report.places_still_beyond_surface_distance.clear();
+  for(std::size_t i = 0; i < (std::min)(far.places.size(), Remeshing_report::max_reported_places); ++i)
+    report.places_still_beyond_surface_distance.push_back({{far.places[i].x(), far.places[i].y(), far.places[i].z()}});
   report.output_faces_beyond_surface_distance = far.output_faces;
   report.input_vertices_beyond_surface_distance = far.input_vertices;
   report.input_edges_beyond_surface_distance = far.input_edges;

@@ -42,6 +42,7 @@ struct Places_beyond_distance
   std::size_t input_edges = 0;    ///< input edges with a point farther than the bound from the output
   std::size_t input_faces = 0;    ///< input faces with a point farther than the bound from the output
   double largest = 0.;            ///< the largest distance of a sample, either way
+  Epick::Point_3 farthest = CGAL::ORIGIN; ///< the first sample at the largest distance
 };
 
 /// Keeps, of the points passed to `add()` in turn, the first in each cell of a grid of `spacing`:
@@ -396,7 +397,11 @@ Places_beyond_distance places_beyond_distance(const InputMesh& input, const Dist
   const auto add_places = [&](const Distance_samples& samples) {
     for(std::size_t i = 0; i < samples.points.size(); ++i)
     {
-      largest = (std::max)(largest, samples.squared[i]);
+      if(samples.squared[i] > largest)
+      {
+        largest = samples.squared[i];
+        result.farthest = Epick::Point_3(samples.points[i].x(), samples.points[i].y(), samples.points[i].z());
+      }
       if(samples.squared[i] > squared_bound)
         thinned.add(Epick::Point_3(samples.points[i].x(), samples.points[i].y(), samples.points[i].z()), result.places);
     }
