@@ -471,6 +471,7 @@ py::dict to_dict(const CR::Remeshing_statistics& s)
   d["optimization_chord_splits"] = s.optimization_chord_splits;
   d["optimization_collapses"] = s.optimization_collapses;
   d["flips_after_gluing"] = s.flips_after_gluing;
+  d["collapses_after_gluing"] = s.collapses_after_gluing;
   d["moves_after_gluing"] = s.moves_after_gluing;
   d["seconds_segmentation"] = s.seconds_segmentation;
   d["seconds_flattening"] = s.seconds_flattening;

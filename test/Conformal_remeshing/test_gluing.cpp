@@ -54,6 +54,74 @@ TEST(FlipsAfterGluing, FlipAThinPairUnlessItsEdgeIsKeptOrTheQuadFolds)
   EXPECT_EQ(triangles, pair);
 }
 
+TEST(CollapsesAfterGluing, ASampleBesideACurveEndGoesIntoItAlongItsFeature)
+{
+  // A feature along y = 0 sampled at s0 (a curve end), s1 (inside the curve, a twentieth from
+  // s0) and s2 (a curve end); p and q above and below. The triangles at s0-s1 are needles (2.6
+  // degrees). s1 goes into s0; the feature's chord is then s0-s2.
+  typedef CGAL::Epick::Point_3 P;
+  typedef std::array<std::size_t, 3> T;
+  typedef CR::Poly_annulus_segmentation::Vertex V;
+  const std::size_t s0 = 0, s1 = 1, s2 = 2, p = 3, q = 4;
+  const std::vector<P> points{P(0, 0, 0), P(0.05, 0, 0), P(1, 0, 0), P(0.5, 0.8, 0), P(0.5, -0.8, 0)};
+  RM::Curve_samples samples;
+  samples.points.assign(points.begin(), points.begin() + 3);
+  samples.at_vertex[V(10)] = s0;
+  samples.at_vertex[V(12)] = s2;
+  samples.curve_of_chord[{s0, s1}] = 0;
+  samples.curve_of_chord[{s1, s2}] = 0;
+  samples.is_kept_curve = {1};
+  samples.number_of_curves = 1;
+  const std::vector<T> glued{T{{s0, s1, p}}, T{{s1, s2, p}}, T{{s1, s0, q}}, T{{s2, s1, q}}};
+  const auto size = [](std::size_t, std::size_t) { return 1.; }; // edges under a quarter collapse
+
+  std::vector<T> triangles = glued;
+  std::vector<std::size_t> patch_of_triangle{0, 0, 1, 1};
+  RM::Glued_soup_collapser collapser(points, triangles, patch_of_triangle, samples, 30.);
+  EXPECT_EQ(collapser.collapse_short_edges(size), 1u);
+  EXPECT_EQ(triangles, (std::vector<T>{T{{s0, s2, p}}, T{{s2, s0, q}}}));
+  EXPECT_EQ(patch_of_triangle, (std::vector<std::size_t>{0, 1}));
+  EXPECT_TRUE(collapser.is_kept_chord(s2, s0));
+  EXPECT_FALSE(collapser.is_kept_chord(s0, p));
+
+  // The feature turning at s1, 0.02 off the chord s0-s2 (beyond 0.008 times the size): s1 stays,
+  // so that the turn is not cut off.
+  std::vector<P> turning = points;
+  turning[s1] = P(0.05, 0.02, 0);
+  samples.points[s1] = turning[s1];
+  triangles = glued;
+  patch_of_triangle = {0, 0, 1, 1};
+  RM::Glued_soup_collapser turn(turning, triangles, patch_of_triangle, samples, 30.);
+  EXPECT_EQ(turn.collapse_short_edges(size), 0u);
+  EXPECT_EQ(triangles, glued);
+  samples.points[s1] = points[s1];
+
+  // Both ends of the short edge curve ends (s1 at a vertex of the segmented mesh too): nothing goes.
+  samples.at_vertex[V(11)] = s1;
+  triangles = glued;
+  patch_of_triangle = {0, 0, 1, 1};
+  RM::Glued_soup_collapser ends(points, triangles, patch_of_triangle, samples, 30.);
+  EXPECT_EQ(ends.collapse_short_edges(size), 0u);
+  EXPECT_EQ(triangles, glued);
+
+  // s1 on the feature, the short edge off it (to a point r beside s1): s1 does not leave its
+  // feature; r, an inner point, goes into s1 instead.
+  samples.at_vertex.erase(V(11));
+  std::vector<P> with_r = points;
+  with_r.push_back(P(0.5, 0.04, 0)); // r = 5, beside the middle of the feature
+  std::vector<P> moved = with_r;
+  moved[s1] = P(0.48, 0, 0);
+  const std::size_t r = 5;
+  const std::vector<T> around_r{T{{s0, s1, r}}, T{{s1, s2, r}}, T{{s2, p, r}}, T{{p, s0, r}}, T{{s1, s0, q}}, T{{s2, s1, q}}};
+  triangles = around_r;
+  patch_of_triangle.assign(6, 0);
+  RM::Glued_soup_collapser inner(moved, triangles, patch_of_triangle, samples, 30.);
+  EXPECT_EQ(inner.collapse_short_edges(size), 1u);
+  for(const T& t : triangles)
+    EXPECT_TRUE(std::find(t.begin(), t.end(), r) == t.end()) << "r is gone";
+  EXPECT_TRUE(std::any_of(triangles.begin(), triangles.end(), [&](const T& t) { return std::find(t.begin(), t.end(), s1) != t.end(); }));
+}
+
 TEST(FlipsAfterGluing, ShapePassesFlipTheChosenEdgesOnly)
 {
   // Two triangles with an angle of 118 degrees at c and d (skewness 0.48), none below 30: the

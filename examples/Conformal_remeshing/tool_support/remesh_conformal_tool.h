@@ -480,6 +480,7 @@ inline int run(int argc, char** argv, const CGAL::Conformal_remeshing::internal:
           .field("optimization_flips", statistics.optimization_flips).field("optimization_splits", statistics.optimization_splits)
           .field("optimization_chord_splits", statistics.optimization_chord_splits)
           .field("optimization_collapses", statistics.optimization_collapses).field("flips_after_gluing", statistics.flips_after_gluing)
+          .field("collapses_after_gluing", statistics.collapses_after_gluing)
           .field("moves_after_gluing", statistics.moves_after_gluing)
           .field("patch_jobs_run", statistics.patch_jobs_run).field("patch_jobs_kept", statistics.patch_jobs_kept)
           .field("self_intersection_refinements", report.self_intersection_refinements);

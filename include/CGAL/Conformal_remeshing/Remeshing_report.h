@@ -150,7 +150,7 @@ struct Remeshing_report
 /// `statistics` when it is given: for benchmarks, profiling and the tools' detailed reports.
 /// The counts of the patches' meshing and the seconds add up over every round of meshing again
 /// (`Remeshing_report::self_intersection_refinements`, and a fallback to refinement alone);
-/// `flips_after_gluing` and `moves_after_gluing` are those of the output.
+/// `collapses_after_gluing`, `flips_after_gluing` and `moves_after_gluing` are those of the output.
 struct Remeshing_statistics
 {
   std::vector<Flattening_report> patches; ///< the flattening of each patch
@@ -183,6 +183,9 @@ struct Remeshing_statistics
   /// edge flips on the glued mesh: between boundary samples and at moved points for shape, then
   /// of triangles below 30 degrees; mostly across the cuts between patches
   std::size_t flips_after_gluing = 0;
+  /// edge collapses on the glued mesh: edges at samples shorter than a quarter of the size there
+  /// (samples that the patches had to keep that close), one vertex fewer each
+  std::size_t collapses_after_gluing = 0;
   /// vertex moves on the glued mesh: samples of the cuts between patches and their neighbours,
   /// moved on the input surface for shape
   std::size_t moves_after_gluing = 0;

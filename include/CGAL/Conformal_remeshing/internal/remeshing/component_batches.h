@@ -183,6 +183,7 @@ inline void add_batch_statistics(Remeshing_statistics& total, const Remeshing_st
   total.optimization_chord_splits += batch.optimization_chord_splits;
   total.optimization_collapses += batch.optimization_collapses;
   total.flips_after_gluing += batch.flips_after_gluing;
+  total.collapses_after_gluing += batch.collapses_after_gluing;
   total.moves_after_gluing += batch.moves_after_gluing;
   total.seconds_segmentation += batch.seconds_segmentation;
   total.seconds_flattening += batch.seconds_flattening;

@@ -2,8 +2,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The gluing stage of `remesh_conformal()`: the remeshed patches merged on their shared boundary
-// samples into one triangle soup, improved across the cuts between patches (flips, and moves of
-// the cuts' samples on the input surface), made a mesh and checked for self-intersections with
+// samples into one triangle soup, improved across the cuts between patches (collapses of short
+// edges at samples, flips, and moves of the cuts' samples on the input surface), made a mesh and checked for self-intersections with
 // exact predicates. Improvements that make the output intersect itself are given up here; what
 // still intersects is returned for the caller to mesh again finer (see mesh_and_glue.h).
 
@@ -13,6 +13,7 @@
 #include <CGAL/Conformal_remeshing/Error.h>
 #include <CGAL/Conformal_remeshing/Remeshing_report.h>
 #include <CGAL/Conformal_remeshing/segment_into_poly_annuli.h>
+#include <CGAL/Conformal_remeshing/internal/remeshing/collapses_after_gluing.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/flips_after_gluing.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/mesh_patches.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/moves_after_gluing.h>
@@ -126,29 +127,39 @@ inline Glued_soup glued_soup(const Meshed_patches& meshed)
 }
 
 /// The improvements of a glued soup across the cuts between patches, which the patches could not
-/// make alone: their boundary chords and samples were fixed. Chords between two samples are
-/// flipped for shape, the cuts' samples and their neighbours moved on the input surface
-/// (moves_after_gluing.h), the edges at moved points flipped for shape again, then the triangles
-/// below 30 degrees (or the minimum angle) flipped. `apply()` can be called again, without the
-/// moves, and `undo()` gives up the flips: each starts from the soup as glued.
+/// make alone: their boundary chords and samples were fixed. The short edges at samples are
+/// collapsed (collapses_after_gluing.h), chords between two samples flipped for shape, the cuts'
+/// samples and their neighbours moved on the input surface (moves_after_gluing.h), the edges at
+/// moved points flipped for shape again, then the triangles below 30 degrees (or the minimum
+/// angle) flipped. `apply()` can be called again, without the moves, and `undo()` gives up the
+/// collapses and flips: each starts from the soup as glued.
 class Improvement_after_gluing
 {
 public:
   Improvement_after_gluing(Glued_soup& soup, const Curve_samples& samples, const Poly_annulus_segmentation& segmentation,
-                           double longest_edge, double minimum_angle)
-    : soup_(soup), samples_(samples), segmentation_(segmentation), unmoved_points_(soup.points),
-      unmoved_faces_(soup.point_face), longest_edge_(longest_edge), angle_((std::max)(30., minimum_angle))
+                           const Sizing& sizing, double longest_edge, double minimum_angle)
+    : soup_(soup), samples_(samples), segmentation_(segmentation), sizing_(sizing), unmoved_points_(soup.points),
+      unmoved_faces_(soup.point_face), glued_triangles_(soup.triangles), glued_patch_of_triangle_(soup.patch_of_triangle),
+      longest_edge_(longest_edge), angle_((std::max)(30., minimum_angle))
   {}
 
   void apply(bool with_moves, Remeshing_statistics& statistics)
   {
-    flips_.undo(soup_.triangles);
+    undo(statistics);
     soup_.points = unmoved_points_;
     soup_.point_face = unmoved_faces_;
+    const auto size_at = [&](std::size_t i) { return sizing_.at(soup_.points[i], soup_.point_face[i]); };
+    std::vector<Poly_annulus_segmentation::Face> visited;
+    Glued_soup_collapser collapser(soup_.points, soup_.triangles, soup_.patch_of_triangle, samples_, angle_,
+                                   [&](const Epick::Point_3& p, std::size_t near) {
+                                     const auto closest = closest_point_nearby(segmentation_, soup_.point_face[near], p, size_at(near), visited);
+                                     return CGAL::squared_distance(p, closest.first);
+                                   });
+    statistics.collapses_after_gluing =
+      collapser.collapse_short_edges([&](std::size_t a, std::size_t b) { return (std::min)(size_at(a), size_at(b)); });
     const auto is_sample = [&](std::size_t i) { return i < samples_.points.size(); };
     Glued_soup_flipper flipper(
-      soup_.points, soup_.triangles,
-      [&](std::size_t a, std::size_t b) { return is_sample(a) && is_sample(b) && samples_.is_kept_chord(a, b); }, angle_);
+      soup_.points, soup_.triangles, [&](std::size_t a, std::size_t b) { return collapser.is_kept_chord(a, b); }, angle_);
     flipper.shape_passes([&](std::size_t a, std::size_t b) { return is_sample(a) && is_sample(b); }, 3);
     statistics.moves_after_gluing = 0;
     if(with_moves)
@@ -160,24 +171,27 @@ public:
         flipper.shape_passes([&](std::size_t a, std::size_t b) { return movable[a] || movable[b]; }, 3);
     }
     flipper.angle_passes();
-    flips_ = flipper.result();
-    statistics.flips_after_gluing = flips_.flips;
+    statistics.flips_after_gluing = flipper.result().flips;
   }
 
   void undo(Remeshing_statistics& statistics)
   {
-    flips_.undo(soup_.triangles);
+    soup_.triangles = glued_triangles_;
+    soup_.patch_of_triangle = glued_patch_of_triangle_;
     statistics.flips_after_gluing = 0;
+    statistics.collapses_after_gluing = 0;
   }
 
 private:
   Glued_soup& soup_;
   const Curve_samples& samples_;
   const Poly_annulus_segmentation& segmentation_;
+  const Sizing& sizing_;
   const std::vector<Epick::Point_3> unmoved_points_;
   const std::vector<Poly_annulus_segmentation::Face> unmoved_faces_;
+  const std::vector<std::array<std::size_t, 3> > glued_triangles_;
+  const std::vector<std::size_t> glued_patch_of_triangle_;
   double longest_edge_, angle_;
-  Soup_flips flips_; // of the last call, to undo
 };
 
 /// A glued output: the mesh, and for each of its vertices (in the order of `vertices(mesh)`) its
@@ -282,7 +296,7 @@ Glued_output<TriangleMesh> glue_patches(const Meshed_patches& meshed, const Poly
                                         const std::function<bool()>& input_self_intersects, Remeshing_statistics& statistics)
 {
   Glued_soup soup = glued_soup(meshed);
-  Improvement_after_gluing improvement(soup, meshed.samples, segmentation, longest_edge_factor * sizing.target(), minimum_angle);
+  Improvement_after_gluing improvement(soup, meshed.samples, segmentation, sizing, longest_edge_factor * sizing.target(), minimum_angle);
   improvement.apply(true, statistics);
   Glued_output<TriangleMesh> output;
   soup_to_mesh(soup, output);

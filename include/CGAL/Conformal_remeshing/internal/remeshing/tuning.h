@@ -39,6 +39,11 @@ constexpr double tight_curve_split_factor = 0.045, shortest_tight_curve_split_fa
 // mesh from the border.
 constexpr double collapse_edge_factor = 0.7;
 
+// After gluing, the edges at samples shorter than this times the size there are collapsed
+// (collapses_after_gluing.h): two samples that close (the ends and middle of a short slit, the
+// samples of two curves that pass close by) are where the glued output had its needles.
+constexpr double sample_collapse_edge_factor = 0.25;
+
 // The frontal insertion's target edge length in the plane, as a ratio to the refinement's size
 // bound (`longest_edge_factor` h through the map's scale): 0.95 h on the surface. Rows of
 // equilateral triangles at h itself cover the surface with fewer vertices than the refinement
