@@ -48,14 +48,14 @@ namespace remeshing {
 ///  - any other point may go.
 /// A collapse is taken only when the result stays a manifold (the link condition), no remaining
 /// triangle around the point that goes turns over or degenerates (its normal stays within 90
-/// degrees of the old one), the new triangles pass within `border_chord_deviation` times the
-/// size of the point that goes (on a crease they would cut it off), their centroids stand off the
-/// input surface (`off_surface`, when given) by no more than that or than the centroids of the
-/// triangles they replace, and no angle falls below the smaller of `angle_degrees` and the
-/// smallest angle of the triangles it changes or removes; where that smallest angle is below
-/// `angle_degrees`, the collapse must raise it. Shortest edges first. Removed triangles
-/// are dropped from `triangles` and `patch_of_triangle` (the points that go stay in `points`,
-/// used by no triangle). Returns the number of collapses.
+/// degrees of the old one), the new triangles pass the point that goes within
+/// `border_chord_deviation` times the size (on a crease they would cut it off), their
+/// centroids stand off the input surface (`off_surface`, when given) by no more than that or
+/// than the centroids of the triangles they replace, and no angle falls below the smaller of
+/// `angle_degrees` and the smallest angle of the triangles it changes or removes; where that
+/// smallest angle is below `angle_degrees`, the collapse must raise it. Shortest edges first.
+/// Removed triangles are dropped from `triangles` and `patch_of_triangle` (the points that go
+/// stay in `points`, used by no triangle). Returns the number of collapses.
 class Glued_soup_collapser
 {
 public:
