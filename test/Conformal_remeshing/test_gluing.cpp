@@ -78,7 +78,7 @@ TEST(CollapsesAfterGluing, ASampleBesideACurveEndGoesIntoItAlongItsFeature)
   std::vector<T> triangles = glued;
   std::vector<std::size_t> patch_of_triangle{0, 0, 1, 1};
   RM::Glued_soup_collapser collapser(points, triangles, patch_of_triangle, samples, 30.);
-  EXPECT_EQ(collapser.collapse_short_edges(size), 1u);
+  EXPECT_EQ(collapser.collapse_short_edges(size, 1.), 1u);
   EXPECT_EQ(triangles, (std::vector<T>{T{{s0, s2, p}}, T{{s2, s0, q}}}));
   EXPECT_EQ(patch_of_triangle, (std::vector<std::size_t>{0, 1}));
   EXPECT_TRUE(collapser.is_kept_chord(s2, s0));
@@ -92,7 +92,7 @@ TEST(CollapsesAfterGluing, ASampleBesideACurveEndGoesIntoItAlongItsFeature)
   triangles = glued;
   patch_of_triangle = {0, 0, 1, 1};
   RM::Glued_soup_collapser turn(turning, triangles, patch_of_triangle, samples, 30.);
-  EXPECT_EQ(turn.collapse_short_edges(size), 0u);
+  EXPECT_EQ(turn.collapse_short_edges(size, 1.), 0u);
   EXPECT_EQ(triangles, glued);
   samples.points[s1] = points[s1];
 
@@ -101,7 +101,7 @@ TEST(CollapsesAfterGluing, ASampleBesideACurveEndGoesIntoItAlongItsFeature)
   triangles = glued;
   patch_of_triangle = {0, 0, 1, 1};
   RM::Glued_soup_collapser ends(points, triangles, patch_of_triangle, samples, 30.);
-  EXPECT_EQ(ends.collapse_short_edges(size), 0u);
+  EXPECT_EQ(ends.collapse_short_edges(size, 1.), 0u);
   EXPECT_EQ(triangles, glued);
 
   // s1 on the feature, the short edge off it (to a point r beside s1): s1 does not leave its
@@ -116,7 +116,7 @@ TEST(CollapsesAfterGluing, ASampleBesideACurveEndGoesIntoItAlongItsFeature)
   triangles = around_r;
   patch_of_triangle.assign(6, 0);
   RM::Glued_soup_collapser inner(moved, triangles, patch_of_triangle, samples, 30.);
-  EXPECT_EQ(inner.collapse_short_edges(size), 1u);
+  EXPECT_EQ(inner.collapse_short_edges(size, 1.), 1u);
   for(const T& t : triangles)
     EXPECT_TRUE(std::find(t.begin(), t.end(), r) == t.end()) << "r is gone";
   EXPECT_TRUE(std::any_of(triangles.begin(), triangles.end(), [&](const T& t) { return std::find(t.begin(), t.end(), s1) != t.end(); }));

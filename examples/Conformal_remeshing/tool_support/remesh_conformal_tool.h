@@ -130,6 +130,15 @@ inline std::string point_text(const std::array<double, 3>& p)
   return text.str();
 }
 
+// A point of the report as a JSON array [x, y, z], written where `json` stands.
+inline tools::Json_writer& json_point(tools::Json_writer& json, const std::array<double, 3>& p)
+{
+  json.begin_array();
+  for(double c : p)
+    json.value(c);
+  return json.end_array();
+}
+
 inline bool parse_plane(const std::string& text, std::vector<K::Plane_3>& planes)
 {
   std::istringstream in(text);
@@ -454,22 +463,15 @@ inline int run(int argc, char** argv, const CGAL::Conformal_remeshing::internal:
           .field("refinements", report.surface_distance_refinements).field("places", report.places_beyond_surface_distance)
           .field("rounds_dropped", report.surface_distance_rounds_dropped)
           .field("largest", report.largest_surface_distance);
-      json.key("largest_point").begin_array();
-      for(double c : report.largest_surface_distance_point)
-        json.value(c);
-      json.end_array().field("output_faces_beyond", report.output_faces_beyond_surface_distance)
+      json_point(json.key("largest_point"), report.largest_surface_distance_point)
+          .field("output_faces_beyond", report.output_faces_beyond_surface_distance)
           .field("input_vertices_beyond", report.input_vertices_beyond_surface_distance)
           .field("input_edges_beyond", report.input_edges_beyond_surface_distance)
           .field("input_faces_beyond", report.input_faces_beyond_surface_distance);
       // Where the output still strays (at most Remeshing_report::max_reported_places of them).
       json.key("places_still_beyond").begin_array();
       for(const std::array<double, 3>& place : report.places_still_beyond_surface_distance)
-      {
-        json.begin_array();
-        for(double c : place)
-          json.value(c);
-        json.end_array();
-      }
+        json_point(json, place);
       json.end_array().end_object();
       json.key("frontal_insertion").begin_object().field("dropped", report.frontal_dropped)
           .field("fallback_reason", report.frontal_fallback_reason).end_object();

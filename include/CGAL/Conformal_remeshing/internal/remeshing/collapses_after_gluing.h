@@ -44,7 +44,7 @@ namespace remeshing {
 ///  - a sample inside a curve that must stay an output polyline (`is_kept_chord()`) goes only
 ///    into its neighbour along that curve, and only if it stands within `border_chord_deviation`
 ///    times the size of the chord from that neighbour to its other one (a turn of a border or a
-///    feature is not cut off), which is then kept (`kept_chords()`);
+///    feature is not cut off), which is then kept (`is_kept_chord()`);
 ///  - any other point may go.
 /// A collapse is taken only when the result stays a manifold (the link condition), no remaining
 /// triangle around the point that goes turns over or degenerates (its normal stays within 90
@@ -85,26 +85,28 @@ public:
         removable_[by_point[k].second] = removable_[by_point[k - 1].second] = 0;
   }
 
-  /// Chords along kept curves made by the collapses (smaller index first).
-  const std::set<std::pair<std::size_t, std::size_t> >& kept_chords() const { return kept_chords_; }
-
   bool is_kept_chord(std::size_t a, std::size_t b) const
   {
     const std::size_t n = samples_.points.size();
     return (a < n && b < n && samples_.is_kept_chord(a, b)) || kept_chords_.count(std::minmax(a, b)) > 0;
   }
 
-  std::size_t collapse_short_edges(const Edge_size& size)
+  /// `largest_size`: no edge's size exceeds it (the target), so that `size` is asked only about
+  /// the edges short enough for it.
+  std::size_t collapse_short_edges(const Edge_size& size, double largest_size)
   {
-    std::vector<std::tuple<double, std::size_t, std::size_t> > candidates;
+    const double longest_candidate = sample_collapse_edge_factor * largest_size;
+    std::vector<std::tuple<double, std::size_t, std::size_t, double> > candidates; // length^2, ends, size
     for(const Triangle& t : triangles_)
       for(int k = 0; k < 3; ++k)
       {
-        const std::size_t a = t[k], b = t[(k + 1) % 3];
+        const std::size_t a = (std::min)(t[k], t[(k + 1) % 3]), b = (std::max)(t[k], t[(k + 1) % 3]);
         const double squared = CGAL::squared_distance(points_[a], points_[b]);
-        const double bound = sample_collapse_edge_factor * size(a, b);
-        if(squared < bound * bound)
-          candidates.emplace_back(squared, (std::min)(a, b), (std::max)(a, b));
+        if(!(squared < longest_candidate * longest_candidate))
+          continue;
+        const double edge_size = size(a, b);
+        if(squared < CGAL::square(sample_collapse_edge_factor * edge_size))
+          candidates.emplace_back(squared, a, b, edge_size);
       }
     std::sort(candidates.begin(), candidates.end());
     candidates.erase(std::unique(candidates.begin(), candidates.end()), candidates.end()); // an inner edge is in two triangles
@@ -114,7 +116,7 @@ public:
       const std::size_t a = std::get<1>(c), b = std::get<2>(c);
       if(!has_edge(a, b))
         continue; // an earlier collapse took it
-      const double deviation = border_chord_deviation * size(a, b);
+      const double deviation = border_chord_deviation * std::get<3>(c);
       if(try_collapse(a, b, deviation) || try_collapse(b, a, deviation))
         ++collapses;
     }
@@ -206,10 +208,7 @@ private:
     double worst_after = -1., nearest = std::numeric_limits<double>::infinity();
     for(std::size_t t : changed)
     {
-      Triangle moved = triangles_[t];
-      for(std::size_t& w : moved)
-        if(w == u)
-          w = v;
+      const Triangle moved = with_replaced(triangles_[t], u, v);
       const Epick::Vector_3 before = normal(triangles_[t]), after = normal(moved);
       if(!(before * after > 0.))
         return false;
@@ -224,9 +223,7 @@ private:
       return false;
     for(std::size_t t : changed)
     {
-      for(std::size_t& w : triangles_[t])
-        if(w == u)
-          w = v;
+      triangles_[t] = with_replaced(triangles_[t], u, v);
       star_[v].push_back(t);
     }
     for(std::size_t t : on_edge)
@@ -248,15 +245,15 @@ private:
       for(std::size_t t : *ts)
         before = (std::max)(before, off_surface_(centroid(triangles_[t]), u));
     for(std::size_t t : changed)
-    {
-      Triangle moved = triangles_[t];
-      for(std::size_t& w : moved)
-        if(w == u)
-          w = v;
-      if(off_surface_(centroid(moved), v) > before)
+      if(off_surface_(centroid(with_replaced(triangles_[t], u, v)), v) > before)
         return false;
-    }
     return true;
+  }
+
+  static Triangle with_replaced(Triangle t, std::size_t u, std::size_t v)
+  {
+    std::replace(t.begin(), t.end(), u, v);
+    return t;
   }
 
   double min_angle_cosine(const Triangle& t) const

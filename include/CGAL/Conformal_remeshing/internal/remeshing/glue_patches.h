@@ -156,7 +156,7 @@ public:
                                      return CGAL::squared_distance(p, closest.first);
                                    });
     statistics.collapses_after_gluing =
-      collapser.collapse_short_edges([&](std::size_t a, std::size_t b) { return (std::min)(size_at(a), size_at(b)); });
+      collapser.collapse_short_edges([&](std::size_t a, std::size_t b) { return (std::min)(size_at(a), size_at(b)); }, sizing_.target());
     const auto is_sample = [&](std::size_t i) { return i < samples_.points.size(); };
     Glued_soup_flipper flipper(
       soup_.points, soup_.triangles, [&](std::size_t a, std::size_t b) { return collapser.is_kept_chord(a, b); }, angle_);
