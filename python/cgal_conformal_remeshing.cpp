@@ -498,6 +498,7 @@ py::dict to_dict(const CR::Remeshing_report& r)
   d["patch_bisections"] = r.patch_bisections;
   d["feature_edges"] = r.feature_edges;
   d["dangling_feature_edges"] = r.dangling_feature_edges;
+  d["narrow_strip_feature_edges"] = r.narrow_strip_feature_edges;
   d["features_dropped"] = r.features_dropped;
   d["features_fallback_reason"] = r.features_fallback_reason;
   d["frontal_dropped"] = r.frontal_dropped;

@@ -72,7 +72,8 @@ def test_round_trip_matches_the_tool(tmp_path, plate, remeshed_plate):
 def test_report_holds_the_library_reports(remeshed_plate):
     V2, _, report, _ = remeshed_plate
     for key in ("target_edge_length", "input", "input_crosses_itself", "number_of_patches", "plane_cuts",
-                "patch_bisections", "feature_edges", "dangling_feature_edges", "features_dropped",
+                "patch_bisections", "feature_edges", "dangling_feature_edges", "narrow_strip_feature_edges",
+                "features_dropped",
                 "features_fallback_reason", "frontal_dropped", "frontal_fallback_reason",
                 "self_intersection_refinements", "refined_boundary_curves", "split_diagonals",
                 "output_vertices", "output_faces", "input_repairs", "statistics"):

@@ -446,6 +446,51 @@ TEST(RemeshAnyTopology, CreasesCloserThanATargetLengthStayInsideTheirPatch)
   EXPECT_EQ(with.feature_edges, without.feature_edges);
 }
 
+// A box of side 10 whose edge at y = 10, z = 10 is cut by a step `width` deep and high (a
+// rabbet): two strips `width` wide, the first at y = 10 - width, the second at z = 10 - width,
+// between three creases of 90 degrees along x.
+Mesh rabbeted_box(double width)
+{
+  const double c = 10. - width;
+  const std::vector<K::Point_3> points = {{0, 0, 0}, {10, 0, 0}, {10, 10, 0}, {0, 10, 0}, {0, 0, 10}, {10, 0, 10},
+                                          {10, c, 10}, {0, c, 10}, {0, 10, c}, {10, 10, c}, {0, c, c}, {10, c, c}};
+  const std::vector<std::vector<std::size_t> > polygons = {{0, 3, 2, 1}, {4, 5, 6, 7}, {7, 6, 11, 10}, {10, 11, 9, 8},
+                                                           {3, 8, 9, 2}, {0, 1, 5, 4}, {1, 2, 9, 11, 6, 5}, {0, 4, 7, 10, 8, 3}};
+  Mesh box;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, box);
+  CGAL::Polygon_mesh_processing::triangulate_faces(box);
+  return box;
+}
+
+TEST(RemeshAnyTopology, AStepNarrowerThanHalfTheSnapDistanceKeepsOneOfItsCreases)
+{
+  // A step a thirty-fifth of the target deep and high. Its three creases are sharp, but kept as
+  // features they leave strips across which the only triangles, between samples about a target
+  // apart on both sides, are needles. Two of them stop being features, and the output passes
+  // within the step's size of the input, with the package's quality bars.
+  const double step = 0.005;
+  Mesh box = rabbeted_box(step);
+  const double h = 0.01 * diagonal(box);
+  ASSERT_LT(std::sqrt(2.) * step, 0.05 * h) << "both strips together narrower than half the snap distance";
+  CR::Poly_annulus_segmentation segmentation;
+  CR::segment_into_poly_annuli(box, segmentation, CR::parameters::snap_distance(0.1 * h));
+  EXPECT_EQ(segmentation.narrow_strip_feature_edges, 2u); // each crease is one input edge
+
+  Mesh output;
+  const CR::Remeshing_report report = check_remeshing(box, 20., CGAL::parameters::default_values(), &output);
+  EXPECT_EQ(report.narrow_strip_feature_edges, 2u);
+  EXPECT_LE(CR::compare_to_reference(output, box).relative_hausdorff_distance() * diagonal(box), 1.5 * step);
+
+  // Given as features, all three creases are kept, and the strips are meshed with needles: the
+  // case this test is about.
+  auto sharp = box.add_property_map<Mesh::Edge_index, bool>("e:sharp", false).first;
+  CGAL::Polygon_mesh_processing::detect_sharp_edges(box, 60., sharp);
+  Mesh needles;
+  const CR::Remeshing_report given = CR::remesh_conformal(box, needles, CGAL::parameters::edge_is_constrained_map(sharp));
+  EXPECT_EQ(given.narrow_strip_feature_edges, 0u);
+  EXPECT_LT(CR::mesh_quality(needles).minimum_angle.min, 10.);
+}
+
 TEST(RemeshAnyTopology, FeatureInsideAPatchIsKept)
 {
   // A given feature chain that ends inside the surface (it separates nothing): the patch is slit

@@ -447,6 +447,7 @@ inline int run(int argc, char** argv, const CGAL::Conformal_remeshing::internal:
           .field("features_dropped", report.features_dropped).field("features_fallback_reason", report.features_fallback_reason)
           .field("plane_cuts", report.plane_cuts).field("patch_bisections", report.patch_bisections)
           .field("feature_edges", report.feature_edges).field("dangling_feature_edges", report.dangling_feature_edges)
+          .field("narrow_strip_feature_edges", report.narrow_strip_feature_edges)
           .field("boundary_curves", statistics.boundary_curves).field("refined_boundary_curves", report.refined_boundary_curves)
           .field("split_diagonals", report.split_diagonals).field("component_batches", report.component_batches)
           .field("merged_batches", report.merged_batches).end_object();
@@ -549,6 +550,9 @@ inline int run(int argc, char** argv, const CGAL::Conformal_remeshing::internal:
             << "\n"
             << "  " << report.number_of_patches << " patches (" << report.plane_cuts << " plane cuts, "
             << report.feature_edges << " feature edges" << (report.features_dropped ? ", dropped: no flattening with them" : "")
+            << (report.narrow_strip_feature_edges > 0
+                  ? ", " + std::to_string(report.narrow_strip_feature_edges) + " sharp edges of narrow strips left out"
+                  : std::string())
             << "); seconds: segmentation " << statistics.seconds_segmentation
             << ", flattening " << statistics.seconds_flattening << ", meshing and pull-back " << statistics.seconds_meshing_stage
             << ", gluing " << statistics.seconds_gluing << "\n";

@@ -85,6 +85,11 @@ struct Remeshing_report
   std::size_t feature_edges = 0;    ///< sharp edges of the refined input
   /// feature edges inside a patch rather than between two (the patch is slit open along them)
   std::size_t dangling_feature_edges = 0;
+  /// sharp edges left out of the features: the side that turns less of a strip between features
+  /// (or a feature and the border) narrower than a twentieth of the target edge length, a small
+  /// chamfer or bevel whose triangles, between samples about a target apart on both sides, would
+  /// be needles; the output passes within a few strip widths of them
+  std::size_t narrow_strip_feature_edges = 0;
   /// the sharp features were dropped because a patch could not be flattened with them (see the
   /// named parameter `features_fallback`); `features_fallback_reason` says why
   bool features_dropped = false;

@@ -10,6 +10,7 @@
 
 #include <CGAL/Conformal_remeshing/Error.h>
 #include <CGAL/Conformal_remeshing/check_mesh.h>
+#include <CGAL/Conformal_remeshing/internal/segmentation/narrow_feature_strips.h>
 #include <CGAL/Conformal_remeshing/parameters.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -56,6 +57,9 @@ struct Poly_annulus_segmentation
   std::size_t feature_edges = 0;
   /// feature edges inside a patch (the same patch on both sides): the patch is slit open along them
   std::size_t dangling_feature_edges = 0;
+  /// sharp edges that are no features: one side of a strip between features narrower than half
+  /// the snap distance (see `segment_into_poly_annuli()`)
+  std::size_t narrow_strip_feature_edges = 0;
   std::size_t plane_cuts = 0;
 
   Poly_annulus_segmentation() { reset(); }
@@ -68,7 +72,7 @@ struct Poly_annulus_segmentation
     input_face = mesh.add_property_map<Face, std::size_t>("f:input_face", 0).first;
     is_feature = mesh.add_property_map<Edge, bool>("e:feature", false).first;
     is_user_border = mesh.add_property_map<Edge, bool>("e:user_border", false).first;
-    number_of_patches = feature_edges = dangling_feature_edges = plane_cuts = 0;
+    number_of_patches = feature_edges = dangling_feature_edges = narrow_strip_feature_edges = plane_cuts = 0;
   }
   Poly_annulus_segmentation(const Poly_annulus_segmentation&) = delete;
   Poly_annulus_segmentation& operator=(const Poly_annulus_segmentation&) = delete;
@@ -775,7 +779,7 @@ inline bool bisect_patch(Poly_annulus_segmentation& s, const std::vector<Poly_an
 ///     \cgalParamDefault{none}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{snap_distance}
-///     \cgalParamDescription{vertices closer to a cutting plane than this are taken as on it (`Conformal_remeshing::parameters::snap_distance()`); the scale of the smallest detail kept: pieces of a bisection narrower than 5 times this join the other side, and feature chains inside a patch shorter than 10 times this are dropped unless they turn by more than 90 degrees somewhere (`remesh_conformal()` passes a tenth of the target edge length)}
+///     \cgalParamDescription{vertices closer to a cutting plane than this are taken as on it (`Conformal_remeshing::parameters::snap_distance()`); the scale of the smallest detail kept: pieces of a bisection narrower than 5 times this join the other side, of a strip between sharp features (or a feature and the border) narrower than half this the side that turns less is no feature along its edges at least 10 times this long (but not with `edge_is_constrained_map`), and feature chains inside a patch shorter than 10 times this are dropped unless they turn by more than 90 degrees somewhere (`remesh_conformal()` passes a tenth of the target edge length)}
 ///     \cgalParamType{`double`}
 ///     \cgalParamDefault{0.001 times the bounding-box diagonal}
 ///   \cgalParamNEnd
@@ -839,6 +843,9 @@ void segment_into_poly_annuli(const TriangleMesh& input, Poly_annulus_segmentati
       CGAL::Polygon_mesh_processing::detect_sharp_edges(s.mesh, angle, s.is_feature);
     if(angle > 0. && crease > 0. && crease < angle && snap > 0.)
       internal::segmentation::add_cad_creases(s, crease, 50. * snap, 10. * snap);
+    if(angle > 0.)
+      s.narrow_strip_feature_edges = internal::segmentation::drop_narrow_strip_features(
+        s.mesh, s.is_feature, 0.5 * snap, 10. * snap, [&](Poly_annulus_segmentation::Edge e) { return internal::segmentation::dihedral_turn(s.mesh, e); });
   }
 
   // --- user patches and planes ----------------------------------------------------------------

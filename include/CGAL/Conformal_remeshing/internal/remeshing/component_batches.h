@@ -131,6 +131,7 @@ inline void add_batch_report(Remeshing_report& total, const Remeshing_report& ba
   total.patch_bisections += batch.patch_bisections;
   total.feature_edges += batch.feature_edges;
   total.dangling_feature_edges += batch.dangling_feature_edges;
+  total.narrow_strip_feature_edges += batch.narrow_strip_feature_edges;
   if(batch.features_dropped && !total.features_dropped)
     total.features_fallback_reason = batch.features_fallback_reason;
   total.features_dropped = total.features_dropped || batch.features_dropped;

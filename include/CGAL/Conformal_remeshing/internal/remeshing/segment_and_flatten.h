@@ -53,6 +53,7 @@ inline void add_flattening_statistics(const Poly_annulus_segmentation& segmentat
   report.plane_cuts = segmentation.plane_cuts;
   report.feature_edges = segmentation.feature_edges;
   report.dangling_feature_edges = segmentation.dangling_feature_edges;
+  report.narrow_strip_feature_edges = segmentation.narrow_strip_feature_edges;
   for(const Conformal_flattening& flat : flattened.flattenings)
   {
     const Flattening_report& r = flat.report;
