@@ -10,6 +10,7 @@
 
 #include <CGAL/Conformal_remeshing/Error.h>
 #include <CGAL/Conformal_remeshing/check_mesh.h>
+#include <CGAL/Conformal_remeshing/internal/segmentation/grid_cells.h>
 #include <CGAL/Conformal_remeshing/internal/segmentation/narrow_feature_strips.h>
 #include <CGAL/Conformal_remeshing/parameters.h>
 
@@ -581,11 +582,11 @@ inline void drop_short_dangling_features(Segmentation& s, double min_length, dou
 class Crease_grid
 {
 public:
-  Crease_grid(const Mesh& m, const std::vector<char>& crease, double clearance) : m_(m), cell_(clearance)
+  Crease_grid(const Mesh& m, const std::vector<char>& crease, double clearance) : m_(m), cells_(clearance)
   {
     for(Segmentation::Edge e : m.edges())
       if(crease[e])
-        cells_[key(midpoint(e))].push_back(e);
+        cells_.cell_of(midpoint(e)).push_back(e);
   }
 
   Epick::Point_3 midpoint(Segmentation::Edge e) const { return CGAL::midpoint(m_.point(m_.vertex(e, 0)), m_.point(m_.vertex(e, 1))); }
@@ -596,27 +597,13 @@ public:
   bool has_other_crease_near(Segmentation::Edge e, const Is_other& is_other) const
   {
     const Epick::Point_3 p = midpoint(e);
-    const std::array<long, 3> c = key(p);
-    for(long dx = -1; dx <= 1; ++dx)
-      for(long dy = -1; dy <= 1; ++dy)
-        for(long dz = -1; dz <= 1; ++dz)
-        {
-          const auto found = cells_.find({{c[0] + dx, c[1] + dy, c[2] + dz}});
-          if(found != cells_.end())
-            for(Segmentation::Edge f : found->second)
-              if(is_other(f) && !shares_a_vertex(e, f) && CGAL::squared_distance(p, midpoint(f)) < cell_ * cell_)
-                return true;
-        }
-    return false;
+    const double clearance = cells_.side();
+    return cells_.any_near(p, [&](Segmentation::Edge f) {
+      return is_other(f) && !shares_a_vertex(e, f) && CGAL::squared_distance(p, midpoint(f)) < clearance * clearance;
+    });
   }
 
 private:
-  // Cells far beyond any coordinate a mesh has are clamped rather than overflow.
-  std::array<long, 3> key(const Epick::Point_3& p) const
-  {
-    const auto cell = [&](double x) { return long((std::max)(-1e15, (std::min)(1e15, std::floor(x / cell_)))); };
-    return {{cell(p.x()), cell(p.y()), cell(p.z())}};
-  }
   bool shares_a_vertex(Segmentation::Edge e, Segmentation::Edge f) const
   {
     for(int i = 0; i < 2; ++i)
@@ -627,8 +614,7 @@ private:
   }
 
   const Mesh& m_;
-  double cell_;
-  std::map<std::array<long, 3>, std::vector<Segmentation::Edge> > cells_;
+  Grid_cells<Segmentation::Edge> cells_;
 };
 
 // Whether each end of `chain` (a vertex with one edge of the chain) is on a feature or a border

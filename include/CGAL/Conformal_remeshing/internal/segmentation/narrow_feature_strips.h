@@ -13,6 +13,8 @@
 #ifndef CGAL_CONFORMAL_REMESHING_INTERNAL_SEGMENTATION_NARROW_FEATURE_STRIPS_H
 #define CGAL_CONFORMAL_REMESHING_INTERNAL_SEGMENTATION_NARROW_FEATURE_STRIPS_H
 
+#include <CGAL/Conformal_remeshing/internal/segmentation/grid_cells.h>
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
 
@@ -89,7 +91,7 @@ inline std::unordered_map<std::size_t, double> ways_along_curves(const Mesh& m, 
 class Curve_edge_grid
 {
 public:
-  Curve_edge_grid(const Mesh& m, const std::vector<Edge>& edges, double spacing) : cell_(1.5 * spacing)
+  Curve_edge_grid(const Mesh& m, const std::vector<Edge>& edges, double spacing) : cells_(1.5 * spacing)
   {
     for(std::size_t i = 0; i < edges.size(); ++i)
     {
@@ -97,7 +99,7 @@ public:
       const std::size_t n = std::size_t(std::ceil(std::sqrt(CGAL::squared_distance(a, b)) / spacing));
       for(std::size_t k = 0; k <= n; ++k)
       {
-        std::vector<std::size_t>& in_cell = cells_[key(a + (n == 0 ? 0. : double(k) / double(n)) * (b - a))];
+        std::vector<std::size_t>& in_cell = cells_.cell_of(a + (n == 0 ? 0. : double(k) / double(n)) * (b - a));
         if(in_cell.empty() || in_cell.back() != i)
           in_cell.push_back(i);
       }
@@ -109,36 +111,17 @@ public:
   std::vector<std::size_t> edges_near(const Epick::Point_3& p) const
   {
     std::vector<std::size_t> near;
-    const std::array<long, 3> c = key(p);
-    for(long dx = -1; dx <= 1; ++dx)
-      for(long dy = -1; dy <= 1; ++dy)
-        for(long dz = -1; dz <= 1; ++dz)
-        {
-          const auto found = cells_.find({{c[0] + dx, c[1] + dy, c[2] + dz}});
-          if(found != cells_.end())
-            near.insert(near.end(), found->second.begin(), found->second.end());
-        }
+    cells_.any_near(p, [&](std::size_t i) {
+      near.push_back(i);
+      return false;
+    });
     std::sort(near.begin(), near.end());
     near.erase(std::unique(near.begin(), near.end()), near.end());
     return near;
   }
 
 private:
-  std::array<long, 3> key(const Epick::Point_3& p) const
-  {
-    const auto cell = [&](double x) { return long((std::max)(-1e15, (std::min)(1e15, std::floor(x / cell_)))); };
-    return {{cell(p.x()), cell(p.y()), cell(p.z())}};
-  }
-
-  double cell_;
-  struct Cell_hash
-  {
-    std::size_t operator()(const std::array<long, 3>& c) const
-    {
-      return std::hash<long>()(c[0]) ^ (std::hash<long>()(c[1]) * 1000003u) ^ (std::hash<long>()(c[2]) * 998244353u);
-    }
-  };
-  std::unordered_map<std::array<long, 3>, std::vector<std::size_t>, Cell_hash> cells_;
+  Grid_cells<std::size_t> cells_;
 };
 
 // The directions from edge `e` into its faces, across it in their planes (none on the border).
