@@ -11,6 +11,7 @@
 #define CGAL_CONFORMAL_REMESHING_INTERNAL_REMESHING_PROXIMITY_H
 
 #include <CGAL/Conformal_remeshing/internal/parallel_for_each_index.h>
+#include <CGAL/Conformal_remeshing/internal/shortest_ways.h>
 #include <CGAL/Conformal_remeshing/segment_into_poly_annuli.h>
 
 #include <CGAL/AABB_face_graph_triangle_primitive.h>
@@ -22,7 +23,6 @@
 #include <cmath>
 #include <functional>
 #include <limits>
-#include <queue>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -84,40 +84,12 @@ inline std::unordered_map<std::size_t, double> ways_from(const Proximity_mesh& m
                                                         const std::vector<std::vector<Proximity_mesh::Vertex_index> >& twins)
 {
   typedef Proximity_mesh::Vertex_index Vertex;
-  typedef std::pair<double, Vertex> Entry;
-  std::unordered_map<std::size_t, std::pair<double, bool> > way; // the shortest found, and whether settled
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry> > queue;
-  way[std::size_t(v)] = {0., false};
-  queue.emplace(0., v);
-  const auto relax = [&](Vertex w, double length) {
-    if(length > reach)
-      return;
-    const auto inserted = way.emplace(std::size_t(w), std::make_pair(length, false));
-    if(!inserted.second)
-    {
-      if(inserted.first->second.second || !(length < inserted.first->second.first))
-        return;
-      inserted.first->second.first = length;
-    }
-    queue.emplace(length, w);
-  };
-  while(!queue.empty())
-  {
-    const Entry e = queue.top();
-    queue.pop();
-    std::pair<double, bool>& settled = way[std::size_t(e.second)];
-    if(settled.second)
-      continue;
-    settled.second = true;
-    for(Vertex w : twins[e.second])
-      relax(w, e.first);
-    for(Vertex w : m.vertices_around_target(m.halfedge(e.second)))
-      relax(w, e.first + std::sqrt(CGAL::squared_distance(m.point(e.second), m.point(w))));
-  }
-  std::unordered_map<std::size_t, double> lengths;
-  for(const auto& w : way)
-    lengths.emplace(w.first, w.second.first);
-  return lengths;
+  return shortest_ways_within(v, reach, [&](Vertex u, const auto& step) {
+    for(Vertex w : twins[u])
+      step(w, 0.);
+    for(Vertex w : m.vertices_around_target(m.halfedge(u)))
+      step(w, std::sqrt(CGAL::squared_distance(m.point(u), m.point(w))));
+  });
 }
 
 inline double cosine(const Epick::Vector_3& a, const Epick::Vector_3& b)

@@ -14,6 +14,7 @@
 #define CGAL_CONFORMAL_REMESHING_INTERNAL_SEGMENTATION_NARROW_FEATURE_STRIPS_H
 
 #include <CGAL/Conformal_remeshing/internal/segmentation/grid_cells.h>
+#include <CGAL/Conformal_remeshing/internal/shortest_ways.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Surface_mesh.h>
@@ -25,7 +26,6 @@
 #include <limits>
 #include <memory>
 #include <numeric>
-#include <queue>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -47,43 +47,15 @@ typedef Mesh::Vertex_index Vertex;
 typedef Mesh::Edge_index Edge;
 typedef Mesh::Halfedge_index Halfedge;
 
-// The point of the segment `e` closest to `q`.
-inline Epick::Point_3 closest_point_on(const Epick::Segment_3& e, const Epick::Point_3& q)
-{
-  const Epick::Vector_3 d = e.target() - e.source();
-  const double length = d.squared_length();
-  const double t = length > 0. ? (std::max)(0., (std::min)(1., ((q - e.source()) * d) / length)) : 0.;
-  return e.source() + t * d;
-}
-
 // The lengths of the shortest ways along the curve edges (`outgoing` halfedges of each vertex)
 // from `source` to the vertices within `radius`.
 inline std::unordered_map<std::size_t, double> ways_along_curves(const Mesh& m, const std::vector<std::vector<Halfedge> >& outgoing,
                                                                  Vertex source, double radius)
 {
-  std::unordered_map<std::size_t, double> way{{std::size_t(source), 0.}};
-  typedef std::pair<double, std::size_t> Entry;
-  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry> > queue;
-  queue.emplace(0., std::size_t(source));
-  while(!queue.empty())
-  {
-    const Entry top = queue.top();
-    queue.pop();
-    if(top.first > way[top.second])
-      continue;
-    const Vertex v(static_cast<Mesh::size_type>(top.second));
+  return shortest_ways_within(source, radius, [&](Vertex v, const auto& step) {
     for(Halfedge h : outgoing[v])
-    {
-      const double length = top.first + std::sqrt(CGAL::squared_distance(m.point(v), m.point(m.target(h))));
-      const auto found = way.find(std::size_t(m.target(h)));
-      if(length <= radius && (found == way.end() || length < found->second))
-      {
-        way[std::size_t(m.target(h))] = length;
-        queue.emplace(length, std::size_t(m.target(h)));
-      }
-    }
-  }
-  return way;
+      step(m.target(h), std::sqrt(CGAL::squared_distance(m.point(v), m.point(m.target(h)))));
+  });
 }
 
 // The curve edges in cells: each cell lists the edges with a point in it, the edges being
@@ -230,7 +202,7 @@ private:
     std::vector<std::size_t> found;
     for(std::size_t j : grid_->edges_near(q))
     {
-      const Epick::Point_3 p = closest_point_on(segment(j), q);
+      const Epick::Point_3 p = Epick().construct_projected_point_3_object()(segment(j), q);
       const double d = std::sqrt(CGAL::squared_distance(q, p));
       if(j == i || !(d < width_) || std::none_of(inward.begin(), inward.end(), [&](const Epick::Vector_3& in) { return (p - q) * in > 0.; }))
         continue;
@@ -265,8 +237,8 @@ inline std::size_t drop_one_side_of_narrow_strips(const Mesh& m, Mesh::Property_
                                                   double min_length, const std::function<double(Edge)>& turn)
 {
   const auto length_of = [&](Edge e) { return std::sqrt(CGAL::squared_distance(m.point(m.vertex(e, 0)), m.point(m.vertex(e, 1)))); };
-  const auto droppable = [&](Edge e) { return is_feature[e] && !m.is_border(e) && length_of(e) >= min_length; };
-  if(std::none_of(m.edges().begin(), m.edges().end(), droppable))
+  const auto is_inner_feature = [&](Edge e) { return is_feature[e] && !m.is_border(e); };
+  if(std::none_of(m.edges().begin(), m.edges().end(), [&](Edge e) { return is_inner_feature(e) && length_of(e) >= min_length; }))
     return 0;
   std::size_t number_of_chains = 0;
   const std::vector<long> chain = feature_chains(m, is_feature, number_of_chains);
@@ -276,11 +248,12 @@ inline std::size_t drop_one_side_of_narrow_strips(const Mesh& m, Mesh::Property_
   std::vector<std::vector<std::size_t> > across(edges.size());
   std::vector<std::size_t> order; // the long feature edges with a curve edge across a narrow strip
   for(std::size_t i = 0; i < edges.size(); ++i)
-    if(is_feature[edges[i]] && !m.is_border(edges[i]))
+    if(is_inner_feature(edges[i]))
     {
-      chain_length[chain[edges[i]]] += length_of(edges[i]);
-      chain_turn[chain[edges[i]]] += length_of(edges[i]) * turn(edges[i]);
-      if(droppable(edges[i]))
+      const double length = length_of(edges[i]);
+      chain_length[chain[edges[i]]] += length;
+      chain_turn[chain[edges[i]]] += length * turn(edges[i]);
+      if(length >= min_length)
         across[i] = sides.across(i);
       if(!across[i].empty())
         order.push_back(i);
