@@ -491,6 +491,57 @@ TEST(RemeshAnyTopology, AStepNarrowerThanHalfTheSnapDistanceKeepsOneOfItsCreases
   EXPECT_LT(CR::mesh_quality(needles).minimum_angle.min, 10.);
 }
 
+// A square plate of side 10 and `thickness`, with creases of 90 degrees around both faces: its
+// rims are four strips `thickness` wide, each bounded by two long curves and two short ones.
+Mesh thin_plate(double thickness)
+{
+  const double t = thickness;
+  const std::vector<K::Point_3> points = {{0, 0, 0}, {10, 0, 0}, {10, 10, 0}, {0, 10, 0},
+                                          {0, 0, t}, {10, 0, t}, {10, 10, t}, {0, 10, t}};
+  const std::vector<std::vector<std::size_t> > polygons = {{0, 3, 2, 1}, {4, 5, 6, 7}, {0, 1, 5, 4},
+                                                           {1, 2, 6, 5}, {2, 3, 7, 6}, {3, 0, 4, 7}};
+  Mesh plate;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, plate);
+  CGAL::Polygon_mesh_processing::triangulate_faces(plate);
+  return plate;
+}
+
+TEST(BoundarySamples, TheTwoSidesOfAStripAreSampledOutOfPhase)
+{
+  // Rims 0.35 targets wide (a thin plate's, CGAL's boeing.off). Sampled alike, their two sides'
+  // samples would face each other, and every triangle across the rim would have an angle of
+  // atan(0.35) = 19 degrees; half a step out of phase, the rims are zigzags of isosceles
+  // triangles of at least atan(0.7) = 35 degrees.
+  Mesh plate = thin_plate(0.05);
+  const double h = 0.01 * diagonal(plate);
+  ASSERT_NEAR(0.05 / h, 0.35, 0.01);
+  Mesh output;
+  check_remeshing(plate, 20., CGAL::parameters::default_values(), &output);
+  std::size_t rim_triangles = 0;
+  double smallest_on_rims = 180.;
+  for(Mesh::Face_index f : output.faces())
+  {
+    std::array<K::Point_3, 3> p;
+    int k = 0;
+    std::array<bool, 4> on_rim{{true, true, true, true}}; // x = 0, x = 10, y = 0, y = 10
+    for(Mesh::Vertex_index v : CGAL::vertices_around_face(output.halfedge(f), output))
+    {
+      const K::Point_3& q = output.point(v);
+      p[k++] = q;
+      const std::array<double, 4> off_rim{{q.x(), 10. - q.x(), q.y(), 10. - q.y()}};
+      for(int r = 0; r < 4; ++r)
+        on_rim[r] = on_rim[r] && std::abs(off_rim[r]) < 1e-9;
+    }
+    if(!(on_rim[0] || on_rim[1] || on_rim[2] || on_rim[3]))
+      continue;
+    ++rim_triangles;
+    const std::array<double, 3> angles = CR::triangle_quality(p[0], p[1], p[2]).angles;
+    smallest_on_rims = (std::min)({smallest_on_rims, angles[0], angles[1], angles[2]});
+  }
+  EXPECT_GT(rim_triangles, 4u * 2u * 60u); // two triangles per chord of about a target
+  EXPECT_GT(smallest_on_rims, 30.);
+}
+
 TEST(RemeshAnyTopology, FeatureInsideAPatchIsKept)
 {
   // A given feature chain that ends inside the surface (it separates nothing): the patch is slit

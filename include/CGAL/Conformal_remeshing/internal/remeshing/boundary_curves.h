@@ -15,10 +15,12 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstddef>
 #include <limits>
 #include <map>
+#include <set>
 #include <utility>
 #include <vector>
 
@@ -413,16 +415,122 @@ inline std::size_t number_of_curve_pieces(const Poly_annulus_segmentation& s, co
   return (std::max<std::size_t>)(fewest, std::size_t(std::round(total / curve_spacing)));
 }
 
+// The curves of `around` (those of one patch) in the order of its boundary, if they make one
+// loop in which each curve end is the end of exactly one other curve; else none.
+inline std::vector<std::size_t> curves_in_loop_order(const std::vector<std::size_t>& around,
+                                                     const std::vector<std::vector<Curve_samples::Vertex> >& curves)
+{
+  std::map<Curve_samples::Vertex, std::vector<std::size_t> > curves_at;
+  for(std::size_t c : around)
+  {
+    if(curves[c].front() == curves[c].back())
+      return {};
+    curves_at[curves[c].front()].push_back(c);
+    curves_at[curves[c].back()].push_back(c);
+  }
+  for(const auto& at : curves_at)
+    if(at.second.size() != 2 || at.second[0] == at.second[1])
+      return {};
+  std::vector<std::size_t> order{around.front()};
+  Curve_samples::Vertex v = curves[around.front()].back();
+  while(order.size() < around.size())
+  {
+    const std::vector<std::size_t>& two = curves_at.at(v);
+    const std::size_t next = two[0] == order.back() ? two[1] : two[0];
+    if(next == order.front())
+      break;
+    order.push_back(next);
+    v = curves[next].front() == v ? curves[next].back() : curves[next].front();
+  }
+  return order.size() == around.size() ? order : std::vector<std::size_t>();
+}
+
+// The curves of `s` to sample half a step out of phase (1, else 0): one side of every strip. A
+// strip is a patch bounded by one loop of curves whose two shortest, its ends, are of one piece,
+// shorter than the `target` and than every other curve, and not next to each other; its sides
+// are the two chains of curves between them, with as many pieces each (`pieces[c]` is curve
+// `c`'s, `length[c]` its length). Why: sampled alike, the two sides' samples face each other
+// across the strip, which is then meshed in right triangles whose smallest angle is
+// atan(width / spacing) (20 degrees at a width of 0.37 spacings), or with a point in the middle
+// of each cell, no better (a thin plate's rims: CGAL's boeing.off); half a step out of phase,
+// each sample faces the middle of a chord of the other side, and the strip is a zigzag of
+// isosceles triangles whose smallest angle is atan(2 width / spacing) (36 degrees there; at
+// widths near the spacing, nearly equilateral). A curve beside two strips keeps the phase the
+// first one gives it; a strip that would need the other one is left as it is.
+inline std::vector<char> out_of_phase_curves(const Poly_annulus_segmentation& s,
+                                             const std::vector<std::vector<Curve_samples::Vertex> >& curves,
+                                             const std::vector<std::size_t>& pieces, const std::vector<double>& length,
+                                             double target)
+{
+  const Poly_annulus_segmentation::Mesh& m = s.mesh;
+  const std::size_t none = std::size_t(-1);
+  std::map<std::size_t, std::vector<std::size_t> > curves_of_patch;
+  for(std::size_t c = 0; c < curves.size(); ++c)
+  {
+    const std::pair<std::size_t, std::size_t> sides = patches_beside(s, m.halfedge(curves[c][0], curves[c][1]));
+    for(std::size_t patch : {sides.first, sides.second})
+      if(patch != none)
+        curves_of_patch[patch].push_back(c);
+  }
+  std::vector<int> phase(curves.size(), -1); // -1: none asked yet; 0: in phase; 1: out of phase
+  for(const auto& patch : curves_of_patch)
+  {
+    const std::vector<std::size_t> loop = curves_in_loop_order(patch.second, curves);
+    if(loop.size() < 4)
+      continue;
+    std::vector<std::size_t> by_length(loop.size());
+    for(std::size_t i = 0; i < loop.size(); ++i)
+      by_length[i] = i;
+    std::sort(by_length.begin(), by_length.end(), [&](std::size_t i, std::size_t j) { return length[loop[i]] < length[loop[j]]; });
+    const std::size_t first_end = (std::min)(by_length[0], by_length[1]), second_end = (std::max)(by_length[0], by_length[1]);
+    const bool ends = pieces[loop[first_end]] == 1 && pieces[loop[second_end]] == 1 &&
+                      length[loop[by_length[1]]] < target && length[loop[by_length[1]]] < length[loop[by_length[2]]];
+    if(!ends || second_end == first_end + 1 || (first_end == 0 && second_end + 1 == loop.size()))
+      continue;
+    // the sides: `side[0]` between the ends, `side[1]` around the loop's start
+    std::array<std::vector<std::size_t>, 2> side;
+    std::array<std::size_t, 2> side_pieces{{0, 0}};
+    for(std::size_t i = 0; i < loop.size(); ++i)
+      if(i != first_end && i != second_end)
+      {
+        const int k = (i > first_end && i < second_end) ? 0 : 1;
+        side[k].push_back(loop[i]);
+        side_pieces[k] += pieces[loop[i]];
+      }
+    if(side_pieces[0] != side_pieces[1])
+      continue;
+    // the phase of side 0 that no curve with a phase already contradicts, if any
+    auto contradicts = [&](int side_0_phase) {
+      for(int k = 0; k < 2; ++k)
+        for(std::size_t c : side[k])
+          if(phase[c] >= 0 && phase[c] != (k == 0 ? side_0_phase : 1 - side_0_phase))
+            return true;
+      return false;
+    };
+    const int side_0_phase = !contradicts(0) ? 0 : (!contradicts(1) ? 1 : -1);
+    if(side_0_phase < 0)
+      continue;
+    for(int k = 0; k < 2; ++k)
+      for(std::size_t c : side[k])
+        phase[c] = k == 0 ? side_0_phase : 1 - side_0_phase;
+  }
+  std::vector<char> out_of_phase(curves.size(), 0);
+  for(std::size_t c = 0; c < curves.size(); ++c)
+    out_of_phase[c] = phase[c] == 1;
+  return out_of_phase;
+}
+
 // Samples the `c`-th curve, `curve`, into `samples`: its ends, and between them `pieces` - 1
-// points evenly spaced along its `pieces_of_curve` (`curve_pieces()`, `total` units in all);
-// the chords between consecutive samples are recorded as the curve's. A curve of one edge
+// points evenly spaced along its `pieces_of_curve` (`curve_pieces()`, `total` units in all),
+// or `out_of_phase`, `pieces` points half a step later (the first and last chords half as
+// long); the chords between consecutive samples are recorded as the curve's. A curve of one edge
 // between two contacts (`contact_edge`) is cut into equal parts from its lexicographically
 // smaller end, so that every sheet through the edge gets the same points to the last bit.
 inline void place_curve_samples(const Poly_annulus_segmentation& s,
                                 const std::vector<std::vector<Poly_annulus_segmentation::Mesh::Halfedge_index> >& outgoing,
                                 const std::vector<Curve_samples::Vertex>& curve, std::size_t c,
                                 const std::vector<Curve_piece>& pieces_of_curve, double total, std::size_t pieces,
-                                bool contact_edge, Curve_samples& samples)
+                                bool contact_edge, bool out_of_phase, Curve_samples& samples)
 {
   typedef Poly_annulus_segmentation::Mesh::Halfedge_index Halfedge;
   const Poly_annulus_segmentation::Mesh& m = s.mesh;
@@ -437,13 +545,15 @@ inline void place_curve_samples(const Poly_annulus_segmentation& s,
   std::size_t piece = 0;
   double before = 0.; // curve units before the piece
   const bool smaller_first = contact_edge && m.point(curve.front()) < m.point(curve.back());
-  for(std::size_t k = 1; k < pieces; ++k)
+  const std::size_t inner_samples = out_of_phase ? pieces : pieces - 1;
+  for(std::size_t k = 1; k <= inner_samples; ++k)
   {
     if(contact_edge)
     {
       const Epick::Point_3 &a = m.point(smaller_first ? curve.front() : curve.back()),
                            &b = m.point(smaller_first ? curve.back() : curve.front());
-      const double t = double(smaller_first ? k : pieces - k) / double(pieces); // from `a`
+      const double from_a = out_of_phase ? double(smaller_first ? k : pieces + 1 - k) - 0.5 : double(smaller_first ? k : pieces - k);
+      const double t = from_a / double(pieces);
       const bool a_is_smaller_vertex = (smaller_first ? curve.front() : curve.back()) < (smaller_first ? curve.back() : curve.front());
       samples.on_edge[std::minmax(curve.front(), curve.back())].emplace_back(a_is_smaller_vertex ? t : 1. - t, samples.points.size());
       chord_to(samples.points.size());
@@ -451,7 +561,7 @@ inline void place_curve_samples(const Poly_annulus_segmentation& s,
       samples.face.push_back(face_of_curve_halfedge(m, m.halfedge(curve.front(), curve.back())));
       continue;
     }
-    const double at = step * double(k);
+    const double at = step * (out_of_phase ? double(k) - 0.5 : double(k));
     while(before + pieces_of_curve[piece].units < at && piece + 1 < pieces_of_curve.size())
       before += pieces_of_curve[piece++].units;
     const Curve_piece& p = pieces_of_curve[piece];
@@ -531,15 +641,24 @@ inline Curve_samples sample_boundary_curves(const Poly_annulus_segmentation& s, 
       std::size_t& most = contact_edge_pieces[std::minmax(m.point(curves[c].front()), m.point(curves[c].back()))];
       most = (std::max)(most, pieces[c]);
     }
+  for(std::size_t c = 0; c < curves.size(); ++c)
+    if(is_contact_edge[c])
+      pieces[c] = contact_edge_pieces.at(std::minmax(m.point(curves[c].front()), m.point(curves[c].back())));
+  // The sheets through a contact edge take the same phase too: out of phase if any asks.
+  std::vector<char> out_of_phase = out_of_phase_curves(s, curves, pieces, curve_length, sizing.target());
+  std::set<std::pair<Epick::Point_3, Epick::Point_3> > out_of_phase_contact_edges;
+  for(std::size_t c = 0; c < curves.size(); ++c)
+    if(is_contact_edge[c] && out_of_phase[c])
+      out_of_phase_contact_edges.insert(std::minmax(m.point(curves[c].front()), m.point(curves[c].back())));
+  for(std::size_t c = 0; c < curves.size(); ++c)
+    if(is_contact_edge[c])
+      out_of_phase[c] = out_of_phase_contact_edges.count(std::minmax(m.point(curves[c].front()), m.point(curves[c].back()))) != 0;
   Curve_samples samples;
   samples.number_of_curves = curves.size();
   samples.is_kept_curve = kept_curves(s, curves);
   for(std::size_t c = 0; c < curves.size(); ++c)
-  {
-    if(is_contact_edge[c])
-      pieces[c] = contact_edge_pieces.at(std::minmax(m.point(curves[c].front()), m.point(curves[c].back())));
-    place_curve_samples(s, outgoing, curves[c], c, pieces_of_curve[c], total[c], pieces[c], is_contact_edge[c] != 0, samples);
-  }
+    place_curve_samples(s, outgoing, curves[c], c, pieces_of_curve[c], total[c], pieces[c], is_contact_edge[c] != 0,
+                        out_of_phase[c] != 0, samples);
   for(auto& edge : samples.on_edge)
     std::sort(edge.second.begin(), edge.second.end());
   return samples;

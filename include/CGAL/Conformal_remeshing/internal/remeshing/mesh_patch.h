@@ -312,9 +312,15 @@ inline Surface_optimization_report optimize_patch_on_surface(const Patch_job& jo
   const std::function<double(const Epick::Point_2&)> local_ratio = [&](const Epick::Point_2& p) {
     return planar_size.size_and_scale(p, collapse_hint).first / h;
   };
+  // No flip may join two samples of a chord of the shared curves, this patch's or not: where the
+  // input touches itself, a patch can have both samples of another patch's chord, and an edge
+  // between them would be a third triangle on that chord once glued.
+  Sample_pairs forbidden = job.diagonals_to_split;
+  for(const auto& chord : job.boundary.chords)
+    forbidden.insert(chord.first);
   return optimize_on_surface(planar.points, positions, planar.triangles, planar.number_of_fixed_points, lift, meshing.minimum_angle,
                              longest_edge_factor * h, split_bounds, meshing.optimization_rounds, job.boundary.sample_ids,
-                             job.diagonals_to_split, meshing.moves_in_parallel, collapse_edge_factor * h, hints,
+                             forbidden, meshing.moves_in_parallel, collapse_edge_factor * h, hints,
                              job.size.is_uniform() ? nullptr : local_ratio);
 }
 

@@ -503,7 +503,11 @@ bool point_at_surface_distance(const Epick::Point_2& origin, const Epick::Vector
 /// each other, an equilateral triangle on the surface; then over the segment between each two
 /// consecutive seeds of a row, the seed of the next row, the same way. `surface_point(p, x)` sets
 /// `x` to the image of `p` and returns false when `p` is outside the flattening; such seeds, and
-/// those farther than 8 chords, are left out (and the row's segments next to them).
+/// those farther than 8 chords, are left out (and the row's segments next to them), and so are
+/// the first row's seeds closer than their clearance to one of the two chords of their loop
+/// before theirs or after it: near the end of a strip a few tenths of a target wide, an apex
+/// would stand a small fraction of the spacing off the strip's other side and leave triangles
+/// of 5 to 15 degrees.
 /// Why: the refinement cannot split a shared boundary chord, and inserts the circumcentres of the
 /// triangles on it, close to it: over the chords of a tube such as the wall of a small hole,
 /// whose scale grows by a factor of about 2 across a triangle, the apexes stand at about half
@@ -524,8 +528,9 @@ std::vector<Planar_seed> equilateral_seeds(const std::vector<std::vector<Boundar
     double side; // of the triangle it is the apex of
   };
   std::vector<Planar_seed> seeds;
-  // The apex over the chord from a to b, if found.
-  auto apex = [&](const Front_point& a, const Front_point& b, Front_point& result) {
+  // The apex over the chord from a to b, if found and clear of the `near_chords`.
+  auto apex = [&](const Front_point& a, const Front_point& b, Front_point& result,
+                  const std::vector<Epick::Segment_2>& near_chords = {}) {
     const Epick::Vector_2 chord = b.uv - a.uv;
     const double length = std::sqrt(chord.squared_length());
     if(!(length > 0.))
@@ -542,9 +547,13 @@ std::vector<Planar_seed> equilateral_seeds(const std::vector<std::vector<Boundar
     if(!point_at_surface_distance(middle, inward, a.point, side, 0.866 * length, 8. * length, surface_point, result.uv,
                                   result.point))
       return false;
+    const double clearance = 0.6 * std::sqrt((std::min)(CGAL::squared_distance(result.uv, a.uv), CGAL::squared_distance(result.uv, b.uv)));
+    for(const Epick::Segment_2& chord : near_chords)
+      if(CGAL::squared_distance(chord, result.uv) < clearance * clearance)
+        return false;
     result.valid = true;
     result.side = side;
-    seeds.push_back(Planar_seed{result.uv, 0.6 * std::sqrt((std::min)(CGAL::squared_distance(result.uv, a.uv), CGAL::squared_distance(result.uv, b.uv)))});
+    seeds.push_back(Planar_seed{result.uv, clearance});
     return true;
   };
   const std::map<std::size_t, int> images = images_per_sample(loops);
@@ -560,10 +569,19 @@ std::vector<Planar_seed> equilateral_seeds(const std::vector<std::vector<Boundar
       bool any = false;
       for(std::size_t i = 0; i < front.size(); ++i)
       {
-        const Front_point &a = front[i], &b = front[(i + 1) % front.size()];
-        const Boundary_sample &s = loop[i], &t = loop[(i + 1) % loop.size()];
-        if(a.valid && b.valid && (layer > 0 || (!on_slit(s) && !on_slit(t) && seeded(s, t))))
-          any = apex(a, b, next[i]) || any;
+        const std::size_t n = front.size();
+        const Front_point &a = front[i], &b = front[(i + 1) % n];
+        const Boundary_sample &s = loop[i], &t = loop[(i + 1) % n];
+        if(layer > 0)
+          any = (a.valid && b.valid && apex(a, b, next[i])) || any;
+        else if(!on_slit(s) && !on_slit(t) && seeded(s, t))
+        {
+          std::vector<Epick::Segment_2> near_chords;
+          for(std::size_t k : {n - 2, n - 1, std::size_t(1), std::size_t(2)}) // the chord from i + k
+            if(n > 2 && (i + k) % n != i)
+              near_chords.emplace_back(loop[(i + k) % n].uv, loop[(i + k + 1) % n].uv);
+          any = apex(a, b, next[i], near_chords) || any;
+        }
       }
       if(!any)
         break;
