@@ -635,6 +635,21 @@ TEST(RemeshAnyTopology, CgalElephantGenusThree)
   EXPECT_LT(statistics.optimization_chord_splits, statistics.optimization_splits);
 }
 
+// CGAL's b9_mesh crosses itself: a patch can have both samples of another patch's chord, and a
+// flip of the optimization on the surface joined them once (the glued soup had that chord three
+// times: "used in the same direction by patches 86 and 141"). No flip may join the two samples
+// of any shared chord.
+TEST(RemeshAnyTopology, CgalB9MeshWhoseInputCrossesItselfGlues)
+{
+  Mesh b9, output;
+  ASSERT_TRUE(CR::read_and_check_mesh(std::string(CONFORMAL_REMESHING_CGAL_DATA) + "/meshes/b9_mesh.off", b9).is_valid());
+  const CR::Remeshing_report report = CR::remesh_conformal(b9, output);
+  EXPECT_TRUE(CGAL::is_valid_polygon_mesh(output));
+  EXPECT_TRUE(CR::check_mesh(output).is_valid());
+  EXPECT_FALSE(report.frontal_dropped);
+  EXPECT_LT(CR::mesh_quality(output).share_with_minimum_angle_below(25.), 0.03);
+}
+
 // The elephant at a target of 0.012 (0.87% of its diagonal). Its cuts between patches follow input
 // edges and zigzag; ending them only at turns above 60 or 90 degrees instead of the corner angle
 // (30) raised its smallest angle at 1% from 16.9 to 21 or 24.6 degrees, but made the output
