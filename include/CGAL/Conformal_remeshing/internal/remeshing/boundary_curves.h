@@ -20,7 +20,6 @@
 #include <cstddef>
 #include <limits>
 #include <map>
-#include <set>
 #include <utility>
 #include <vector>
 
@@ -578,6 +577,28 @@ inline void place_curve_samples(const Poly_annulus_segmentation& s,
   chord_to(samples.at_vertex[curve.back()]);
 }
 
+// Gives each curve of `is_contact_edge` (one edge between two contacts) the largest `value` of
+// the curves on the same two points: every sheet through a contact edge must get the same samples.
+template <typename T>
+void agree_on_contact_edges(const Poly_annulus_segmentation::Mesh& m, const std::vector<std::vector<Curve_samples::Vertex> >& curves,
+                            const std::vector<char>& is_contact_edge, std::vector<T>& value)
+{
+  const auto points = [&](std::size_t c) {
+    return std::make_pair((std::min)(m.point(curves[c].front()), m.point(curves[c].back())),
+                          (std::max)(m.point(curves[c].front()), m.point(curves[c].back())));
+  };
+  std::map<std::pair<Epick::Point_3, Epick::Point_3>, T> largest;
+  for(std::size_t c = 0; c < curves.size(); ++c)
+    if(is_contact_edge[c])
+    {
+      T& most = largest[points(c)];
+      most = (std::max)(most, value[c]);
+    }
+  for(std::size_t c = 0; c < curves.size(); ++c)
+    if(is_contact_edge[c])
+      value[c] = largest.at(points(c));
+}
+
 /// Splits the patch boundaries of `s` (edges between two patches, borders, and sharp features
 /// inside a patch, along which the patch is slit open) into curves
 /// between junctions (vertices where other than two boundary edges meet, where the pair of
@@ -631,28 +652,14 @@ inline Curve_samples sample_boundary_curves(const Poly_annulus_segmentation& s, 
     pieces_of_curve[c] = curve_pieces(m, curve, sizing, curve_spacing, curve_length[c], grade_front, grade_back, total[c]);
     pieces[c] = number_of_curve_pieces(s, curve, total[c], curve_spacing, curves_between);
   }
-  // The sheets through a contact edge cut it into the same number of pieces, the most any asks.
+  // The sheets through a contact edge cut it into the same number of pieces, the most any asks,
+  // and sample it out of phase if any asks.
   std::vector<char> is_contact_edge(curves.size(), 0);
-  std::map<std::pair<Epick::Point_3, Epick::Point_3>, std::size_t> contact_edge_pieces;
   for(std::size_t c = 0; c < curves.size(); ++c)
-    if(curves[c].size() == 2 && contact[curves[c].front()] && contact[curves[c].back()])
-    {
-      is_contact_edge[c] = 1;
-      std::size_t& most = contact_edge_pieces[std::minmax(m.point(curves[c].front()), m.point(curves[c].back()))];
-      most = (std::max)(most, pieces[c]);
-    }
-  for(std::size_t c = 0; c < curves.size(); ++c)
-    if(is_contact_edge[c])
-      pieces[c] = contact_edge_pieces.at(std::minmax(m.point(curves[c].front()), m.point(curves[c].back())));
-  // The sheets through a contact edge take the same phase too: out of phase if any asks.
+    is_contact_edge[c] = curves[c].size() == 2 && contact[curves[c].front()] && contact[curves[c].back()];
+  agree_on_contact_edges(m, curves, is_contact_edge, pieces);
   std::vector<char> out_of_phase = out_of_phase_curves(s, curves, pieces, curve_length, sizing.target());
-  std::set<std::pair<Epick::Point_3, Epick::Point_3> > out_of_phase_contact_edges;
-  for(std::size_t c = 0; c < curves.size(); ++c)
-    if(is_contact_edge[c] && out_of_phase[c])
-      out_of_phase_contact_edges.insert(std::minmax(m.point(curves[c].front()), m.point(curves[c].back())));
-  for(std::size_t c = 0; c < curves.size(); ++c)
-    if(is_contact_edge[c])
-      out_of_phase[c] = out_of_phase_contact_edges.count(std::minmax(m.point(curves[c].front()), m.point(curves[c].back()))) != 0;
+  agree_on_contact_edges(m, curves, is_contact_edge, out_of_phase);
   Curve_samples samples;
   samples.number_of_curves = curves.size();
   samples.is_kept_curve = kept_curves(s, curves);
