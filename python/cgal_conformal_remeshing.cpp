@@ -24,6 +24,7 @@
 #include <CGAL/Conformal_remeshing/IO/read_mesh.h>
 #include <CGAL/Conformal_remeshing/check_mesh.h>
 #include <CGAL/Conformal_remeshing/conformal_flatten.h>
+#include <CGAL/Conformal_remeshing/angles_at_sharp_corners.h>
 #include <CGAL/Conformal_remeshing/mesh_quality.h>
 #include <CGAL/Conformal_remeshing/verify_remesh.h>
 #include <CGAL/remesh_conformal.h>
@@ -48,6 +49,7 @@
 #include <limits>
 #include <mutex>
 #include <optional>
+#include <tuple>
 #include <string>
 #include <utility>
 #include <vector>
@@ -862,15 +864,27 @@ py::dict quality(const py::object& V, const py::object& F, const py::object& ref
   }
   Call_state state;
   const auto measured = run_long_call(state, [&] {
-    std::pair<CR::Mesh_quality_report, std::optional<CR::Reference_comparison> > r;
-    r.first = CR::mesh_quality(mesh);
+    std::tuple<CR::Mesh_quality_report, std::optional<CR::Reference_comparison>, std::optional<CR::Sharp_corner_angles> > r;
+    std::get<0>(r) = CR::mesh_quality(mesh);
     if(reference_mesh)
-      r.second = CR::compare_to_reference(mesh, *reference_mesh);
+    {
+      std::get<1>(r) = CR::compare_to_reference(mesh, *reference_mesh);
+      std::get<2>(r) = CR::angles_at_sharp_corners(mesh, *reference_mesh);
+    }
     return r;
   });
-  py::dict d = to_dict(measured.first);
-  if(measured.second)
-    d["fidelity"] = to_dict(*measured.second);
+  py::dict d = to_dict(std::get<0>(measured));
+  if(std::get<1>(measured))
+    d["fidelity"] = to_dict(*std::get<1>(measured));
+  if(const auto& a = std::get<2>(measured))
+  {
+    py::dict corners;
+    corners["sharp_input_corners"] = a->sharp_corners;
+    corners["triangles_below_25"] = a->triangles_below;
+    corners["triangles_below_25_at_sharp_input_corners"] = a->triangles_below_at_sharp_corners;
+    corners["share_below_25_away_from_sharp_input_corners"] = a->share_below_away_from_sharp_corners();
+    d["angles_at_sharp_corners"] = corners;
+  }
   return d;
 }
 
@@ -1004,7 +1018,9 @@ out of range and non-finite coordinates are reported here, not raised.)doc");
 The quality measures of the triangle mesh (mesh_quality()): angles, equiangle skewness, aspect
 ratio, edge lengths, valences and histograms. With reference=(V_ref, F_ref), also
 'fidelity' (compare_to_reference()): Hausdorff distances both ways relative to the reference's
-bounding-box diagonal, area ratio, self-intersection.)doc");
+bounding-box diagonal, area ratio, self-intersection; and 'angles_at_sharp_corners'
+(angles_at_sharp_corners()): the triangles below 25 degrees, how many of them have their smallest
+angle at an input corner sharper than that, and the share of the others.)doc");
 
   m.def("flatten", &flatten, py::arg("V"), py::arg("F"), py::kw_only(), py::arg("time_limit") = py::none(),
         R"doc(flatten(V, F, *, time_limit=None) -> (UV, report)

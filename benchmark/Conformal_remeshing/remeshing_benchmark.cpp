@@ -21,6 +21,7 @@
 // be written.
 
 #include <CGAL/Conformal_remeshing/IO/read_mesh.h>
+#include <CGAL/Conformal_remeshing/angles_at_sharp_corners.h>
 #include <CGAL/Conformal_remeshing/mesh_quality.h>
 #include <CGAL/remesh_conformal.h>
 
@@ -70,7 +71,7 @@ struct Measure
 {
   double seconds = 0.;
   std::size_t vertices = 0;
-  double min_angle = 0., below_25 = 0., below_30 = 0., skewness = 0., edges_in_range = 0., hausdorff_to = 0., hausdorff_from = 0.;
+  double min_angle = 0., below_25 = 0., below_25_away_from_sharp_corners = 0., below_30 = 0., skewness = 0., edges_in_range = 0., hausdorff_to = 0., hausdorff_from = 0.;
   bool self_intersects = false;
 };
 
@@ -83,6 +84,7 @@ Measure measure(const Mesh& input, const Mesh& output, double h, double seconds)
   m.min_angle = q.minimum_angle.min;
   m.below_25 = q.share_with_minimum_angle_below(25.);
   m.below_30 = q.share_with_minimum_angle_below(30.);
+  m.below_25_away_from_sharp_corners = CR::angles_at_sharp_corners(output, input, 25.).share_below_away_from_sharp_corners();
   m.skewness = q.skewness.mean;
   m.edges_in_range = CR::share_of_edges_with_length_in(output, 0.7 * h, 1.4 * h);
   const CR::Reference_comparison c = CR::compare_to_reference(output, input);
@@ -103,7 +105,8 @@ void print_row(const std::string& model, const std::string& method, const Measur
 void write_json(std::ostream& out, const Measure& m)
 {
   out << "{\"median_seconds\": " << m.seconds << ", \"vertices\": " << m.vertices << ", \"min_angle\": " << m.min_angle
-      << ", \"share_below_25\": " << m.below_25 << ", \"mean_skewness\": " << m.skewness
+      << ", \"share_below_25\": " << m.below_25
+      << ", \"share_below_25_away_from_sharp_corners\": " << m.below_25_away_from_sharp_corners << ", \"mean_skewness\": " << m.skewness
       << ", \"edges_in_range\": " << m.edges_in_range << ", \"hausdorff_to_input\": " << m.hausdorff_to
       << ", \"hausdorff_from_input\": " << m.hausdorff_from << ", \"self_intersects\": " << (m.self_intersects ? "true" : "false") << "}";
 }

@@ -136,6 +136,8 @@ def main():
                            "hausdorff_in_out": None if f["reference_diagonal"] is None
                            else f["relative_hausdorff_from_reference"] * f["reference_diagonal"],
                            "share_below_25_degrees": q["share_with_minimum_angle_below"]["25"],
+                           "share_below_25_degrees_away_from_sharp_corners":
+                           r["output_angles_at_sharp_input_corners"]["share_below_away_from_sharp_input_corners"],
                            "relative_hausdorff_out_in": f["relative_hausdorff_to_reference"],
                            "relative_hausdorff_in_out": f["relative_hausdorff_from_reference"],
                            "self_intersects": f["self_intersects"], "stage_seconds": r["seconds"],

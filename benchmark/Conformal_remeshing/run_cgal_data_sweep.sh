@@ -107,12 +107,13 @@ for file in "${files[@]}"; do
     min_angle=$(number_after "minimum angle" "$log")
     input_angle=$(sed -n 's/.*minimum angle [-0-9.e+]* deg (input \([-0-9.e+]*\)).*/\1/p' "$log" | head -n 1)
     below=$(sed -n 's/.*, \([-0-9.e+]*\)% of triangles below 25 deg.*/\1/p' "$log" | head -n 1)
+    below_elsewhere=$(sed -n 's/.*% of triangles below 25 deg (\([-0-9.e+]*\)% away from .*/\1/p' "$log" | head -n 1)
     skewness=$(number_after "mean skewness" "$log")
     to=$(sed -n 's/.*Hausdorff distance to \/ from the input: \([-0-9.e+]*\) \/ .*/\1/p' "$log" | head -n 1)
     from=$(sed -n 's/.*Hausdorff distance to \/ from the input: [-0-9.e+]* \/ \([-0-9.e+]*\) x diagonal.*/\1/p' "$log" | head -n 1)
     intersections=$(sed -n 's/.*self-intersections: \([A-Za-z0-9 ]*\).*/\1/p' "$log" | head -n 1)
-    rows+=("| $name | $vertices | $outcome | $seconds | $out_vertices | $min_angle ($input_angle) | $below | $skewness | $to / $from, self-intersections: $intersections |")
-    json_rows+=("{\"model\": $(json_string "$name"), \"input_vertices\": $vertices, \"outcome\": \"$outcome\", \"seconds\": $seconds, \"output_vertices\": ${out_vertices:-null}, \"minimum_angle\": ${min_angle:-null}, \"input_minimum_angle\": ${input_angle:-null}, \"percent_below_25\": ${below:-null}, \"mean_skewness\": ${skewness:-null}, \"hausdorff_to_input\": ${to:-null}, \"hausdorff_from_input\": ${from:-null}, \"self_intersections\": $(json_string "$intersections"), \"output_sha256\": $checksum}")
+    rows+=("| $name | $vertices | $outcome | $seconds | $out_vertices | $min_angle ($input_angle) | $below ($below_elsewhere) | $skewness | $to / $from, self-intersections: $intersections |")
+    json_rows+=("{\"model\": $(json_string "$name"), \"input_vertices\": $vertices, \"outcome\": \"$outcome\", \"seconds\": $seconds, \"output_vertices\": ${out_vertices:-null}, \"minimum_angle\": ${min_angle:-null}, \"input_minimum_angle\": ${input_angle:-null}, \"percent_below_25\": ${below:-null}, \"percent_below_25_away_from_sharp_corners\": ${below_elsewhere:-null}, \"mean_skewness\": ${skewness:-null}, \"hausdorff_to_input\": ${to:-null}, \"hausdorff_from_input\": ${from:-null}, \"self_intersections\": $(json_string "$intersections"), \"output_sha256\": $checksum}")
     echo "[$count/$total] $name: remeshed in $seconds s, $out_vertices vertices, smallest angle $min_angle (input $input_angle)"
   else
     message="$(grep -v '^remesh_conformal: [a-z ]*$' "$log" | tail -n 1 | cut -c1-400)"
@@ -130,7 +131,8 @@ done
   echo
   echo "Defaults (target edge length 1% of the diagonal), at most $time_limit s per model. $remeshed of $total"
   echo "remeshed, $refused refused with a message, ${#troubles[@]} crashed, hung or ran out of time."
-  echo "Angles in degrees (the input's smallest in parentheses); below 25: share of triangles in %;"
+  echo "Angles in degrees (the input's smallest in parentheses); below 25: share of triangles in %, and"
+  echo "in parentheses the share whose smallest angle is not at an input corner sharper than 25 degrees;"
   echo "Hausdorff distances to / from the input over its diagonal."
   echo
   echo "| model | input vertices | outcome | seconds | output vertices | smallest angle | below 25 | mean skewness | Hausdorff, or the tool's message |"

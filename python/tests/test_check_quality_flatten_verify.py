@@ -58,9 +58,17 @@ def test_quality_against_a_reference(plate, remeshed_plate):
     assert itself["relative_hausdorff_distance"] < 1e-12 and itself["area_ratio"] == pytest.approx(1.0)
     assert not itself["self_intersects"]
     V2, F2 = remeshed_plate[:2]
-    remeshed = crm.quality(V2, F2, reference=[V, F])["fidelity"]
+    measured = crm.quality(V2, F2, reference=[V, F])
+    remeshed = measured["fidelity"]
     assert 0.0 < remeshed["relative_hausdorff_distance"] < 0.01
     assert remeshed["area_ratio"] == pytest.approx(1.0, abs=0.01)
+    # The plate's corners are square: no small angle of the output is forced.
+    corners = measured["angles_at_sharp_corners"]
+    assert corners["sharp_input_corners"] == 0 and corners["triangles_below_25_at_sharp_input_corners"] == 0
+    below = (measured["share_with_minimum_angle_below"][25.0] * len(F2))
+    assert corners["triangles_below_25"] == round(below)
+    assert corners["share_below_25_away_from_sharp_input_corners"] == pytest.approx(
+        measured["share_with_minimum_angle_below"][25.0])
     with pytest.raises(ValueError, match="pair"):
         crm.quality(V, F, reference=V)
 

@@ -1,7 +1,8 @@
-// Tests of the quality measures against hand-computed triangles, and of the comparison with a
+// Tests of the quality measures against hand-computed triangles, of the comparison with a
 // reference mesh (Hausdorff distances and the deviation of each face) on deliberately displaced
-// and self-intersecting copies.
+// and self-intersecting copies, and of the small angles a sharp corner of the reference forces.
 
+#include <CGAL/Conformal_remeshing/angles_at_sharp_corners.h>
 #include <CGAL/Conformal_remeshing/face_deviations.h>
 #include <CGAL/Conformal_remeshing/mesh_quality.h>
 
@@ -403,4 +404,76 @@ TEST(FaceDeviations, RefusesAnEmptyMesh)
   const Mesh m = grid(2), empty;
   EXPECT_THROW(CR::face_deviations(empty, m), CR::Error);
   EXPECT_THROW(CR::face_deviations(m, empty), CR::Error);
+}
+
+namespace {
+
+// The apex of a 15-degree wedge and the ends of its base, 10 from the apex and 2 * 1.3165 long.
+const Point wedge_apex(0, 0, 0), wedge_left(10, -1.3165, 0), wedge_right(10, 1.3165, 0);
+
+} // namespace
+
+TEST(AnglesAtSharpCorners, OnlyTheAnglesAtTheNarrowCornerAreForced)
+{
+  const Mesh reference = single_triangle(wedge_apex, wedge_left, wedge_right);
+  // The wedge cut into three by a point just inside its base: two triangles keep 7.5 degrees at
+  // the apex, the third has about 4 degrees at the base's ends, whose corners are 82.5 degrees wide.
+  Mesh mesh;
+  const auto a = mesh.add_vertex(wedge_apex), l = mesh.add_vertex(wedge_left), r = mesh.add_vertex(wedge_right),
+             p = mesh.add_vertex(Point(9.9, 0, 0));
+  mesh.add_face(a, l, p);
+  mesh.add_face(a, p, r);
+  mesh.add_face(l, r, p);
+
+  const CR::Sharp_corner_angles same = CR::angles_at_sharp_corners(reference, reference);
+  EXPECT_EQ(same.sharp_corners, 1u);
+  EXPECT_EQ(same.triangles_below, 1u);
+  EXPECT_EQ(same.triangles_below_at_sharp_corners, 1u);
+  EXPECT_EQ(same.share_below_away_from_sharp_corners(), 0.);
+
+  const CR::Sharp_corner_angles cut = CR::angles_at_sharp_corners(mesh, reference);
+  EXPECT_EQ(cut.triangles, 3u);
+  EXPECT_EQ(cut.triangles_below, 3u);
+  EXPECT_EQ(cut.triangles_below_at_sharp_corners, 2u);
+  EXPECT_DOUBLE_EQ(cut.share_below_away_from_sharp_corners(), 1. / 3.);
+  // Below 5 degrees only the base's triangle is small, and not at a sharp corner.
+  const CR::Sharp_corner_angles five = CR::angles_at_sharp_corners(mesh, reference, 5.);
+  EXPECT_EQ(five.sharp_corners, 0u);
+  EXPECT_EQ(five.triangles_below, 1u);
+  EXPECT_EQ(five.triangles_below_at_sharp_corners, 0u);
+}
+
+TEST(AnglesAtSharpCorners, SharpEdgesBoundTheSectorsOfAClosedWedge)
+{
+  // A closed prism over the wedge, 10 long: at each apex the cap's sector is 15 degrees between
+  // two sharp edges, the side walls' sectors 90 degrees. The narrow wall under the base is cut
+  // into triangles of about 15 degrees whose small angles sit at the base's ends, in walls
+  // 90 degrees wide: not forced.
+  Mesh prism;
+  std::array<Mesh::Vertex_index, 6> v;
+  const std::array<Point, 3> section{{wedge_apex, wedge_left, wedge_right}};
+  for(int i = 0; i < 3; ++i)
+  {
+    v[i] = prism.add_vertex(Point(section[i].x(), section[i].y(), 0));
+    v[i + 3] = prism.add_vertex(Point(section[i].x(), section[i].y(), 10));
+  }
+  prism.add_face(v[0], v[2], v[1]);
+  prism.add_face(v[3], v[4], v[5]);
+  for(int i = 0; i < 3; ++i)
+  {
+    const int j = (i + 1) % 3;
+    prism.add_face(v[i], v[j], v[j + 3]);
+    prism.add_face(v[i], v[j + 3], v[i + 3]);
+  }
+  ASSERT_TRUE(CGAL::is_closed(prism));
+
+  const CR::Sharp_corner_angles a = CR::angles_at_sharp_corners(prism, prism);
+  EXPECT_EQ(a.sharp_corners, 2u);
+  EXPECT_EQ(a.triangles_below, 4u); // the two caps and the two triangles under the base
+  EXPECT_EQ(a.triangles_below_at_sharp_corners, 2u);
+  // Without sharp edges (a features angle above every turn) no corner is narrower than 25 degrees.
+  const CR::Sharp_corner_angles smooth =
+    CR::angles_at_sharp_corners(prism, prism, 25., CR::parameters::features_angle(179.));
+  EXPECT_EQ(smooth.sharp_corners, 0u);
+  EXPECT_EQ(smooth.triangles_below_at_sharp_corners, 0u);
 }

@@ -394,6 +394,8 @@ inline int run(int argc, char** argv, const CGAL::Conformal_remeshing::internal:
   const double peak_mb_remeshed = peak_resident_megabytes();
   progress(o.fidelity ? "measuring quality and fidelity" : "measuring quality");
   const CR::Mesh_quality_report before = CR::mesh_quality(input), after = CR::mesh_quality(output);
+  const CR::Sharp_corner_angles small_angles =
+    CR::angles_at_sharp_corners(output, input, 25., CR::parameters::features_angle(o.features_angle));
   CR::Reference_comparison fidelity;
   if(o.fidelity)
     fidelity = CR::compare_to_reference(output, input);
@@ -502,6 +504,8 @@ inline int run(int argc, char** argv, const CGAL::Conformal_remeshing::internal:
       tools::write_json(json, before);
       json.key("output_quality");
       tools::write_json(json, after);
+      json.key("output_angles_at_sharp_input_corners");
+      tools::write_json(json, small_angles);
       json.field("output_self_intersects", fidelity.self_intersects);
       json.key("fidelity");
       if(o.fidelity)
@@ -541,7 +545,9 @@ inline int run(int argc, char** argv, const CGAL::Conformal_remeshing::internal:
   std::cout << o.output << ": " << output.number_of_vertices() << " vertices, " << output.number_of_faces()
             << " faces (target edge length " << report.target_edge_length << ")\n"
             << "  minimum angle " << after.minimum_angle.min << " deg (input " << before.minimum_angle.min << "), "
-            << 100. * after.share_with_minimum_angle_below(25.) << "% of triangles below 25 deg, mean skewness "
+            << 100. * after.share_with_minimum_angle_below(25.) << "% of triangles below 25 deg ("
+            << 100. * small_angles.share_below_away_from_sharp_corners() << "% away from "
+            << small_angles.sharp_corners << " input corners sharper than that), mean skewness "
             << after.skewness.mean << " (input " << before.skewness.mean << ")\n"
             << "  Hausdorff distance to / from the input: "
             << (o.fidelity ? hausdorff_text(fidelity) : std::string("not measured (--no-fidelity)"))

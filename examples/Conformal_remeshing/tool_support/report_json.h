@@ -8,6 +8,7 @@
 
 #include "json_writer.h"
 
+#include <CGAL/Conformal_remeshing/angles_at_sharp_corners.h>
 #include <CGAL/Conformal_remeshing/check_mesh.h>
 #include <CGAL/Conformal_remeshing/mesh_quality.h>
 
@@ -72,6 +73,13 @@ inline void write_json(Json_writer& json, const CR::Mesh_quality_report& q)
   json.key("minimum_angle_histogram"); write_json(json, q.minimum_angle_histogram);
   json.key("skewness_histogram"); write_json(json, q.skewness_histogram);
   json.end_object();
+}
+
+inline void write_json(Json_writer& json, const CR::Sharp_corner_angles& a)
+{
+  json.begin_object().field("threshold_degrees", a.threshold_degrees).field("sharp_input_corners", a.sharp_corners)
+      .field("triangles_below", a.triangles_below).field("triangles_below_at_sharp_input_corners", a.triangles_below_at_sharp_corners)
+      .field("share_below_away_from_sharp_input_corners", a.share_below_away_from_sharp_corners()).end_object();
 }
 
 inline void write_json(Json_writer& json, const CR::Reference_comparison& c)
