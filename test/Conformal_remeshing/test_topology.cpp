@@ -542,6 +542,76 @@ TEST(BoundarySamples, TheTwoSidesOfAStripAreSampledOutOfPhase)
   EXPECT_GT(smallest_on_rims, 30.);
 }
 
+// A washer (radii `outer` and `inner`, `thickness` high) tessellated as CAD parts are: each
+// circle a polygon of `segments` vertices, the faces between them quads cut into two slivers.
+// Its outer rim and its hole's wall are bands that close on themselves, each bounded by two
+// circles with no corner, between creases of 90 degrees.
+Mesh thin_washer(double outer, double inner, double thickness, std::size_t segments)
+{
+  std::vector<K::Point_3> points;
+  for(double z : {0., thickness})
+    for(double r : {outer, inner})
+      for(std::size_t i = 0; i < segments; ++i)
+      {
+        const double a = 2. * CGAL_PI * double(i) / double(segments);
+        points.emplace_back(r * std::cos(a), r * std::sin(a), z);
+      }
+  // the i-th vertex of circle `c`: 0 outer and 1 inner at z = 0, 2 and 3 at the thickness
+  const auto at = [&](std::size_t c, std::size_t i) { return c * segments + i % segments; };
+  std::vector<std::vector<std::size_t> > triangles;
+  const auto add_quad = [&](std::size_t a, std::size_t b, std::size_t c, std::size_t d) {
+    triangles.push_back({a, b, c});
+    triangles.push_back({a, c, d});
+  };
+  for(std::size_t i = 0; i < segments; ++i)
+  {
+    add_quad(at(0, i), at(1, i), at(1, i + 1), at(0, i + 1)); // bottom, facing down
+    add_quad(at(2, i), at(2, i + 1), at(3, i + 1), at(3, i)); // top
+    add_quad(at(0, i), at(0, i + 1), at(2, i + 1), at(2, i)); // outer rim
+    add_quad(at(1, i), at(3, i), at(3, i + 1), at(1, i + 1)); // the hole's wall
+  }
+  Mesh washer;
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, triangles, washer);
+  return washer;
+}
+
+TEST(BoundarySamples, TheTwoSidesOfABandThatClosesOnItselfAreSampledOutOfPhase)
+{
+  // The rim and the hole's wall of a washer 0.35 targets thick. Both circles of a band start
+  // their samples at the same vertex of the tessellation: sampled alike, the samples would face
+  // each other across the band (triangles of atan(0.35) = 19 degrees); with one circle half a
+  // step out of phase, the bands are zigzags of isosceles triangles of atan(0.7) = 35 degrees.
+  const double outer = 5., inner = 2.;
+  Mesh washer = thin_washer(outer, inner, 0.05, 64);
+  ASSERT_TRUE(CGAL::is_closed(washer));
+  const double h = 0.01 * diagonal(washer);
+  ASSERT_NEAR(0.05 / h, 0.35, 0.01);
+  Mesh output;
+  check_remeshing(washer, 20., CGAL::parameters::default_values(), &output);
+  std::size_t band_triangles = 0;
+  double smallest_on_bands = 180.;
+  for(Mesh::Face_index f : output.faces())
+  {
+    std::array<K::Point_3, 3> p;
+    int k = 0;
+    bool on_rim = true, on_wall = true; // the circles' chords stand at most 0.0024 inside them
+    for(Mesh::Vertex_index v : CGAL::vertices_around_face(output.halfedge(f), output))
+    {
+      p[k++] = output.point(v);
+      const double r = std::hypot(output.point(v).x(), output.point(v).y());
+      on_rim = on_rim && r > outer - 0.01;
+      on_wall = on_wall && r < inner + 0.01;
+    }
+    if(!on_rim && !on_wall)
+      continue;
+    ++band_triangles;
+    const std::array<double, 3> angles = CR::triangle_quality(p[0], p[1], p[2]).angles;
+    smallest_on_bands = (std::min)({smallest_on_bands, angles[0], angles[1], angles[2]});
+  }
+  EXPECT_GT(double(band_triangles), 1.8 * 2. * CGAL_PI * (outer + inner) / h); // two per chord of about h
+  EXPECT_GT(smallest_on_bands, 30.);
+}
+
 TEST(RemeshAnyTopology, FeatureInsideAPatchIsKept)
 {
   // A given feature chain that ends inside the surface (it separates nothing): the patch is slit

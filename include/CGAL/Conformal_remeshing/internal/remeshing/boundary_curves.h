@@ -444,6 +444,79 @@ inline std::vector<std::size_t> curves_in_loop_order(const std::vector<std::size
   return order.size() == around.size() ? order : std::vector<std::size_t>();
 }
 
+// The curves of `s` beside each patch (a slit's twice).
+inline std::map<std::size_t, std::vector<std::size_t> >
+curves_of_patches(const Poly_annulus_segmentation& s, const std::vector<std::vector<Curve_samples::Vertex> >& curves)
+{
+  const std::size_t none = std::size_t(-1);
+  std::map<std::size_t, std::vector<std::size_t> > curves_of_patch;
+  for(std::size_t c = 0; c < curves.size(); ++c)
+  {
+    const std::pair<std::size_t, std::size_t> sides = patches_beside(s, s.mesh.halfedge(curves[c][0], curves[c][1]));
+    for(std::size_t patch : {sides.first, sides.second})
+      if(patch != none)
+        curves_of_patch[patch].push_back(c);
+  }
+  return curves_of_patch;
+}
+
+// Whether every vertex of `curve` has a vertex of `other` within `distance`.
+inline bool runs_within(const Poly_annulus_segmentation::Mesh& m, const std::vector<Curve_samples::Vertex>& curve,
+                        const std::vector<Curve_samples::Vertex>& other, double distance)
+{
+  const double squared = distance * distance;
+  return std::all_of(curve.begin(), curve.end(), [&](Curve_samples::Vertex v) {
+    return std::any_of(other.begin(), other.end(),
+                       [&](Curve_samples::Vertex w) { return CGAL::squared_distance(m.point(v), m.point(w)) < squared; });
+  });
+}
+
+// Starts the closed curve `curve` (its first vertex repeated at the end) at its vertex nearest
+// to `across`.
+inline void start_across_from(const Poly_annulus_segmentation::Mesh& m, const Epick::Point_3& across,
+                              std::vector<Curve_samples::Vertex>& curve)
+{
+  const auto nearest = std::min_element(curve.begin(), curve.end() - 1, [&](Curve_samples::Vertex v, Curve_samples::Vertex w) {
+    return CGAL::squared_distance(across, m.point(v)) < CGAL::squared_distance(across, m.point(w));
+  });
+  std::vector<Curve_samples::Vertex> rotated(nearest, curve.end() - 1);
+  rotated.insert(rotated.end(), curve.begin(), nearest + 1);
+  curve.swap(rotated);
+}
+
+// The closed curves to sample half a step out of phase: one side of every narrow band, restarted
+// across from the other side's start, each with the vertex it started at before. A band is a
+// patch bounded by two closed curves (no junction on them) with as many pieces each, every
+// vertex of either within `target` of the other: the wall of a hole in a plate thinner than the
+// target, or the rim of such a plate. Why: the rule of `out_of_phase_curves()`, for a strip that
+// closes on itself; sampled alike from starts across from each other, the two sides' samples
+// face each other across the band, and half a step out of phase they make a zigzag of isosceles
+// triangles. A curve beside two bands keeps the phase of the first.
+inline std::vector<std::pair<std::size_t, Curve_samples::Vertex> >
+stagger_narrow_bands(const Poly_annulus_segmentation& s, std::vector<std::vector<Curve_samples::Vertex> >& curves,
+                     const std::vector<char>& junction, const std::vector<std::size_t>& pieces, double target)
+{
+  const Poly_annulus_segmentation::Mesh& m = s.mesh;
+  const auto free_loop = [&](std::size_t c) { return curves[c].front() == curves[c].back() && !junction[curves[c].front()]; };
+  std::vector<char> placed(curves.size(), 0);
+  std::vector<std::pair<std::size_t, Curve_samples::Vertex> > restarted;
+  for(const auto& patch : curves_of_patches(s, curves))
+  {
+    if(patch.second.size() != 2)
+      continue;
+    std::size_t a = patch.second[0], b = patch.second[1];
+    if(placed[b])
+      std::swap(a, b);
+    if(a == b || placed[b] || !free_loop(a) || !free_loop(b) || pieces[a] != pieces[b] ||
+       !runs_within(m, curves[a], curves[b], target) || !runs_within(m, curves[b], curves[a], target))
+      continue;
+    restarted.emplace_back(b, curves[b].front());
+    start_across_from(m, m.point(curves[a].front()), curves[b]);
+    placed[a] = placed[b] = 1;
+  }
+  return restarted;
+}
+
 // The curves of `s` to sample half a step out of phase (1, else 0): one side of every strip. A
 // strip is a patch bounded by one loop of curves whose two shortest, its ends, are of one piece,
 // shorter than the `target` and than every other curve, and not next to each other; its sides
@@ -461,16 +534,7 @@ inline std::vector<char> out_of_phase_curves(const Poly_annulus_segmentation& s,
                                              const std::vector<std::size_t>& pieces, const std::vector<double>& length,
                                              double target)
 {
-  const Poly_annulus_segmentation::Mesh& m = s.mesh;
-  const std::size_t none = std::size_t(-1);
-  std::map<std::size_t, std::vector<std::size_t> > curves_of_patch;
-  for(std::size_t c = 0; c < curves.size(); ++c)
-  {
-    const std::pair<std::size_t, std::size_t> sides = patches_beside(s, m.halfedge(curves[c][0], curves[c][1]));
-    for(std::size_t patch : {sides.first, sides.second})
-      if(patch != none)
-        curves_of_patch[patch].push_back(c);
-  }
+  const std::map<std::size_t, std::vector<std::size_t> > curves_of_patch = curves_of_patches(s, curves);
   std::vector<int> phase(curves.size(), -1); // -1: none asked yet; 0: in phase; 1: out of phase
   for(const auto& patch : curves_of_patch)
   {
@@ -522,7 +586,8 @@ inline std::vector<char> out_of_phase_curves(const Poly_annulus_segmentation& s,
 // Samples the `c`-th curve, `curve`, into `samples`: its ends, and between them `pieces` - 1
 // points evenly spaced along its `pieces_of_curve` (`curve_pieces()`, `total` units in all),
 // or `out_of_phase`, `pieces` points half a step later (the first and last chords half as
-// long); the chords between consecutive samples are recorded as the curve's. A curve of one edge
+// long; on a closed curve, one chord across its start instead, which is not sampled); the
+// chords between consecutive samples are recorded as the curve's. A curve of one edge
 // between two contacts (`contact_edge`) is cut into equal parts from its lexicographically
 // smaller end, so that every sheet through the edge gets the same points to the last bit.
 inline void place_curve_samples(const Poly_annulus_segmentation& s,
@@ -534,11 +599,22 @@ inline void place_curve_samples(const Poly_annulus_segmentation& s,
   typedef Poly_annulus_segmentation::Mesh::Halfedge_index Halfedge;
   const Poly_annulus_segmentation::Mesh& m = s.mesh;
   const double step = total / double(pieces);
-  add_vertex_sample(m, outgoing, curve.front(), samples);
-  add_vertex_sample(m, outgoing, curve.back(), samples);
-  std::size_t previous = samples.at_vertex[curve.front()];
+  // A closed curve sampled out of phase has no sample at its start: its chords run from its
+  // first sample around to its first sample.
+  const bool open_at_start = !(out_of_phase && curve.front() == curve.back());
+  const std::size_t none = std::size_t(-1);
+  std::size_t previous = none, first = none;
+  if(open_at_start)
+  {
+    add_vertex_sample(m, outgoing, curve.front(), samples);
+    add_vertex_sample(m, outgoing, curve.back(), samples);
+    previous = samples.at_vertex[curve.front()];
+  }
   auto chord_to = [&](std::size_t next) {
-    samples.curve_of_chord[std::minmax(previous, next)] = c;
+    if(previous != none)
+      samples.curve_of_chord[std::minmax(previous, next)] = c;
+    else
+      first = next;
     previous = next;
   };
   std::size_t piece = 0;
@@ -574,7 +650,7 @@ inline void place_curve_samples(const Poly_annulus_segmentation& s,
     samples.points.push_back(Epick::Point_3(a.x() + t * (b.x() - a.x()), a.y() + t * (b.y() - a.y()), a.z() + t * (b.z() - a.z())));
     samples.face.push_back(face_of_curve_halfedge(m, h));
   }
-  chord_to(samples.at_vertex[curve.back()]);
+  chord_to(open_at_start ? samples.at_vertex[curve.back()] : first);
 }
 
 // Gives each curve of `is_contact_edge` (one edge between two contacts) the largest `value` of
@@ -624,7 +700,7 @@ inline Curve_samples sample_boundary_curves(const Poly_annulus_segmentation& s, 
   for(Vertex v : m.vertices())
     if(contact[v] && !outgoing[v].empty())
       junction[v] = 1;
-  const std::vector<std::vector<Vertex> > curves = trace_boundary_curves(m, outgoing, junction);
+  std::vector<std::vector<Vertex> > curves = trace_boundary_curves(m, outgoing, junction);
 
   std::map<std::pair<Vertex, Vertex>, int> curves_between;
   for(const auto& curve : curves)
@@ -643,14 +719,24 @@ inline Curve_samples sample_boundary_curves(const Poly_annulus_segmentation& s, 
   std::vector<std::vector<Curve_piece> > pieces_of_curve(curves.size());
   std::vector<double> total(curves.size(), 0.);
   std::vector<std::size_t> pieces(curves.size());
-  for(std::size_t c = 0; c < curves.size(); ++c)
-  {
+  const auto cut_into_pieces = [&](std::size_t c) {
     const std::vector<Vertex>& curve = curves[c];
     const double curve_spacing = c < halvings.size() ? std::ldexp(sizing.target(), -halvings[c]) : sizing.target();
     const double grade_front = tiny_curve_grading_start(c, curve.front(), curves_at, curve_length, sizing.target()),
                  grade_back = tiny_curve_grading_start(c, curve.back(), curves_at, curve_length, sizing.target());
+    total[c] = 0.;
     pieces_of_curve[c] = curve_pieces(m, curve, sizing, curve_spacing, curve_length[c], grade_front, grade_back, total[c]);
     pieces[c] = number_of_curve_pieces(s, curve, total[c], curve_spacing, curves_between);
+  };
+  for(std::size_t c = 0; c < curves.size(); ++c)
+    cut_into_pieces(c);
+  const std::vector<std::pair<std::size_t, Vertex> > staggered = stagger_narrow_bands(s, curves, junction, pieces, sizing.target());
+  for(const auto& restarted : staggered)
+  {
+    const std::size_t c = restarted.first; // a free loop: no other curve ends on its vertices
+    curves_at.erase(restarted.second);
+    curves_at[curves[c].front()] = {c, c};
+    cut_into_pieces(c);
   }
   // The sheets through a contact edge cut it into the same number of pieces, the most any asks,
   // and sample it out of phase if any asks.
@@ -659,6 +745,8 @@ inline Curve_samples sample_boundary_curves(const Poly_annulus_segmentation& s, 
     is_contact_edge[c] = curves[c].size() == 2 && contact[curves[c].front()] && contact[curves[c].back()];
   agree_on_contact_edges(m, curves, is_contact_edge, pieces);
   std::vector<char> out_of_phase = out_of_phase_curves(s, curves, pieces, curve_length, sizing.target());
+  for(const auto& restarted : staggered)
+    out_of_phase[restarted.first] = 1;
   agree_on_contact_edges(m, curves, is_contact_edge, out_of_phase);
   Curve_samples samples;
   samples.number_of_curves = curves.size();
