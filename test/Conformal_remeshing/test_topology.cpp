@@ -22,7 +22,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <functional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 namespace CR = CGAL::Conformal_remeshing;
@@ -506,6 +508,27 @@ Mesh thin_plate(double thickness)
   return plate;
 }
 
+// The triangles of `mesh` whose three vertices pass one of the `sides` tests (the same one),
+// counted, and their smallest angle.
+std::pair<std::size_t, double> triangles_on(const Mesh& mesh, const std::vector<std::function<bool(const K::Point_3&)> >& sides)
+{
+  std::size_t count = 0;
+  double smallest = 180.;
+  for(Mesh::Face_index f : mesh.faces())
+  {
+    std::array<K::Point_3, 3> p;
+    int k = 0;
+    for(Mesh::Vertex_index v : CGAL::vertices_around_face(mesh.halfedge(f), mesh))
+      p[k++] = mesh.point(v);
+    if(std::none_of(sides.begin(), sides.end(), [&](const auto& on) { return on(p[0]) && on(p[1]) && on(p[2]); }))
+      continue;
+    ++count;
+    const std::array<double, 3> angles = CR::triangle_quality(p[0], p[1], p[2]).angles;
+    smallest = (std::min)({smallest, angles[0], angles[1], angles[2]});
+  }
+  return {count, smallest};
+}
+
 TEST(BoundarySamples, TheTwoSidesOfAStripAreSampledOutOfPhase)
 {
   // Rims 0.35 targets wide (a thin plate's, CGAL's boeing.off). Sampled alike, their two sides'
@@ -517,27 +540,12 @@ TEST(BoundarySamples, TheTwoSidesOfAStripAreSampledOutOfPhase)
   ASSERT_NEAR(0.05 / h, 0.35, 0.01);
   Mesh output;
   check_remeshing(plate, 20., CGAL::parameters::default_values(), &output);
+  const auto on = [](int coordinate, double value) {
+    return [=](const K::Point_3& q) { return std::abs(q[coordinate] - value) < 1e-9; };
+  };
   std::size_t rim_triangles = 0;
   double smallest_on_rims = 180.;
-  for(Mesh::Face_index f : output.faces())
-  {
-    std::array<K::Point_3, 3> p;
-    int k = 0;
-    std::array<bool, 4> on_rim{{true, true, true, true}}; // x = 0, x = 10, y = 0, y = 10
-    for(Mesh::Vertex_index v : CGAL::vertices_around_face(output.halfedge(f), output))
-    {
-      const K::Point_3& q = output.point(v);
-      p[k++] = q;
-      const std::array<double, 4> off_rim{{q.x(), 10. - q.x(), q.y(), 10. - q.y()}};
-      for(int r = 0; r < 4; ++r)
-        on_rim[r] = on_rim[r] && std::abs(off_rim[r]) < 1e-9;
-    }
-    if(!(on_rim[0] || on_rim[1] || on_rim[2] || on_rim[3]))
-      continue;
-    ++rim_triangles;
-    const std::array<double, 3> angles = CR::triangle_quality(p[0], p[1], p[2]).angles;
-    smallest_on_rims = (std::min)({smallest_on_rims, angles[0], angles[1], angles[2]});
-  }
+  std::tie(rim_triangles, smallest_on_rims) = triangles_on(output, {on(0, 0.), on(0, 10.), on(1, 0.), on(1, 10.)});
   EXPECT_GT(rim_triangles, 4u * 2u * 60u); // two triangles per chord of about a target
   EXPECT_GT(smallest_on_rims, 30.);
 }
@@ -588,26 +596,12 @@ TEST(BoundarySamples, TheTwoSidesOfABandThatClosesOnItselfAreSampledOutOfPhase)
   ASSERT_NEAR(0.05 / h, 0.35, 0.01);
   Mesh output;
   check_remeshing(washer, 20., CGAL::parameters::default_values(), &output);
+  // the circles' chords stand at most 0.0024 inside them
+  const auto on_rim = [=](const K::Point_3& q) { return std::hypot(q.x(), q.y()) > outer - 0.01; };
+  const auto on_wall = [=](const K::Point_3& q) { return std::hypot(q.x(), q.y()) < inner + 0.01; };
   std::size_t band_triangles = 0;
   double smallest_on_bands = 180.;
-  for(Mesh::Face_index f : output.faces())
-  {
-    std::array<K::Point_3, 3> p;
-    int k = 0;
-    bool on_rim = true, on_wall = true; // the circles' chords stand at most 0.0024 inside them
-    for(Mesh::Vertex_index v : CGAL::vertices_around_face(output.halfedge(f), output))
-    {
-      p[k++] = output.point(v);
-      const double r = std::hypot(output.point(v).x(), output.point(v).y());
-      on_rim = on_rim && r > outer - 0.01;
-      on_wall = on_wall && r < inner + 0.01;
-    }
-    if(!on_rim && !on_wall)
-      continue;
-    ++band_triangles;
-    const std::array<double, 3> angles = CR::triangle_quality(p[0], p[1], p[2]).angles;
-    smallest_on_bands = (std::min)({smallest_on_bands, angles[0], angles[1], angles[2]});
-  }
+  std::tie(band_triangles, smallest_on_bands) = triangles_on(output, {on_rim, on_wall});
   EXPECT_GT(double(band_triangles), 1.8 * 2. * CGAL_PI * (outer + inner) / h); // two per chord of about h
   EXPECT_GT(smallest_on_bands, 30.);
 }
