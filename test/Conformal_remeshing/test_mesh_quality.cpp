@@ -19,6 +19,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <string>
 #include <vector>
 
 namespace CR = CGAL::Conformal_remeshing;
@@ -476,4 +477,26 @@ TEST(AnglesAtSharpCorners, SharpEdgesBoundTheSectorsOfAClosedWedge)
     CR::angles_at_sharp_corners(prism, prism, 25., CR::parameters::features_angle(179.));
   EXPECT_EQ(smooth.sharp_corners, 0u);
   EXPECT_EQ(smooth.triangles_below_at_sharp_corners, 0u);
+}
+
+TEST(AnglesAtSharpCorners, RefusesFacesThatAreNotTriangles)
+{
+  Mesh square;
+  square.add_face(square.add_vertex(Point(0, 0, 0)), square.add_vertex(Point(1, 0, 0)), square.add_vertex(Point(1, 1, 0)),
+                  square.add_vertex(Point(0, 1, 0)));
+  const Mesh triangle = single_triangle(wedge_apex, wedge_left, wedge_right);
+  const std::pair<const Mesh*, const Mesh*> pairs[] = {{&square, &triangle}, {&triangle, &square}};
+  for(const auto& meshes : pairs)
+  {
+    try
+    {
+      CR::angles_at_sharp_corners(*meshes.first, *meshes.second);
+      ADD_FAILURE() << "a quadrangle was measured";
+    }
+    catch(const CR::Error& e)
+    {
+      EXPECT_EQ(e.code(), CR::Error_code::INVALID_INPUT);
+      EXPECT_NE(std::string(e.what()).find("triangle meshes"), std::string::npos);
+    }
+  }
 }
