@@ -82,6 +82,8 @@ std::map<Epick::Point_3, Corner_sectors> sharp_corner_sectors(const ReferenceMes
     return Epick::Triangle_3(point(source(h, reference)), point(target(h, reference)),
                              point(target(next(h, reference), reference)));
   };
+  // Not `detect_sharp_edges()`: it takes the edges of zero-area faces for sharp, and a
+  // degenerate face of an input (which the remesher's repairs remove) is no corner.
   const double cosine_of_features = std::cos(features_angle_degrees * CGAL_PI / 180.);
   const auto is_curve = [&](halfedge_descriptor h) {
     if(is_border_edge(h, reference))
@@ -107,15 +109,18 @@ std::map<Epick::Point_3, Corner_sectors> sharp_corner_sectors(const ReferenceMes
     std::vector<halfedge_descriptor> around;
     for(auto h : halfedges_around_target(halfedge(v, reference), reference))
       around.push_back(h);
-    const auto first_curve = std::find_if(around.begin(), around.end(), is_curve);
-    std::rotate(around.begin(), first_curve == around.end() ? around.begin() : first_curve, around.end());
+    std::vector<char> curve(around.size());
+    std::transform(around.begin(), around.end(), curve.begin(), is_curve);
+    const std::size_t first_curve = std::size_t(std::find(curve.begin(), curve.end(), 1) - curve.begin()) % around.size();
+    std::rotate(around.begin(), around.begin() + std::ptrdiff_t(first_curve), around.end());
+    std::rotate(curve.begin(), curve.begin() + std::ptrdiff_t(first_curve), curve.end());
 
     Corner_sectors sectors;
     std::size_t start = 0;
     double angle = 0.;
     for(std::size_t i = 0; i <= around.size(); ++i)
     {
-      const bool sector_ends = (i == around.size()) || (i > 0 && is_curve(around[i]));
+      const bool sector_ends = (i == around.size()) || (i > 0 && curve[i]);
       if(sector_ends)
       {
         const bool narrow = i > start && angle < threshold_degrees;

@@ -601,10 +601,10 @@ inline void place_curve_samples(const Poly_annulus_segmentation& s,
   const double step = total / double(pieces);
   // A closed curve sampled out of phase has no sample at its start: its chords run from its
   // first sample around to its first sample.
-  const bool open_at_start = !(out_of_phase && curve.front() == curve.back());
+  const bool sampled_at_start = !(out_of_phase && curve.front() == curve.back());
   const std::size_t none = std::size_t(-1);
   std::size_t previous = none, first = none;
-  if(open_at_start)
+  if(sampled_at_start)
   {
     add_vertex_sample(m, outgoing, curve.front(), samples);
     add_vertex_sample(m, outgoing, curve.back(), samples);
@@ -650,7 +650,7 @@ inline void place_curve_samples(const Poly_annulus_segmentation& s,
     samples.points.push_back(Epick::Point_3(a.x() + t * (b.x() - a.x()), a.y() + t * (b.y() - a.y()), a.z() + t * (b.z() - a.z())));
     samples.face.push_back(face_of_curve_halfedge(m, h));
   }
-  chord_to(open_at_start ? samples.at_vertex[curve.back()] : first);
+  chord_to(sampled_at_start ? samples.at_vertex[curve.back()] : first);
 }
 
 // Gives each curve of `is_contact_edge` (one edge between two contacts) the largest `value` of
