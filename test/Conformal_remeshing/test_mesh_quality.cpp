@@ -11,6 +11,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/Random.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <gtest/gtest.h>
@@ -335,6 +336,32 @@ TEST(ReferenceComparison, CoverOfACadPlateIsItsSurfaceWithoutTheFans)
   };
   for(const Fast::Point_3& q : queries)
     EXPECT_NEAR(distance_to(cover, q), distance_to(faces, q), 1e-9 * c.reference_diagonal) << q;
+}
+
+TEST(ReferenceComparison, CoverBuiltInParallelIsTheSameTriangleForTriangle)
+{
+  // Regions are retriangulated in parallel but appended in the order they are found: the
+  // closest-point searches, and so the remesher's surface-distance bound, do not depend on the
+  // number of threads. Three plates side by side give many regions, coplanar and not.
+  Mesh plates;
+  for(int i = 0; i < 3; ++i)
+  {
+    Mesh plate;
+    CGAL::Conformal_remeshing::benchmarks::Perforated_plate_parameters parameters;
+    parameters.seed = 1 + i;
+    CGAL::Conformal_remeshing::benchmarks::make_perforated_plate(plate, parameters);
+    for(auto v : plate.vertices())
+      plate.point(v) = plate.point(v) + CGAL::Epick::Vector_3(200. * i, 0., 0.);
+    CGAL::copy_face_graph(plate, plates);
+  }
+  typedef CGAL::Simple_cartesian<double> Fast;
+  const std::vector<Fast::Triangle_3> in_order = CR::internal::well_shaped_cover<CGAL::Sequential_tag>(plates);
+  const std::vector<Fast::Triangle_3> in_parallel = CR::internal::well_shaped_cover<CGAL::Parallel_if_available_tag>(plates);
+  EXPECT_GT(in_order.size(), 1000u);
+  ASSERT_EQ(in_parallel.size(), in_order.size());
+  for(std::size_t i = 0; i < in_order.size(); ++i)
+    for(int k = 0; k < 3; ++k)
+      ASSERT_EQ(in_parallel[i][k], in_order[i][k]) << "triangle " << i;
 }
 
 TEST(FaceDeviations, OnlyTheFacesAroundARaisedVertexStrayAndByHowMuch)

@@ -130,7 +130,7 @@ std::vector<double> largest_distance_per_face(const TriangleMesh& mesh, const Tr
   std::vector<Face_sample> where;
   std::vector<std::array<CGAL::Simple_cartesian<double>::Point_3, 3> > triangles;
   face_points(mesh, spacing, points, where, triangles);
-  const Distance_to_surface distance(reference);
+  const Distance_to_surface distance(reference, Concurrency_tag());
   const std::vector<double> squared = distance.squared_distances<Concurrency_tag>(points);
   std::vector<double> largest(triangles.size(), 0.);
   std::vector<std::size_t> farthest_point(triangles.size(), 0);

@@ -493,7 +493,7 @@ std::pair<double, std::array<double, 3> > largest_distance_of_samples(const Tria
   std::vector<Face_sample> face_samples;
   std::vector<Fast::Point_3> points = sample_points(mesh, samples, seed, &triangles, &face_samples);
   const std::size_t first_face_sample = points.size() - face_samples.size();
-  const Distance_to_surface distance(reference);
+  const Distance_to_surface distance(reference, Concurrency_tag());
   const Distance_to_surface::Tree& tree = distance.tree();
   const std::vector<double> squared_distance = distance.squared_distances<Concurrency_tag>(points);
   std::size_t farthest = std::size_t(std::max_element(squared_distance.begin(), squared_distance.end()) - squared_distance.begin());

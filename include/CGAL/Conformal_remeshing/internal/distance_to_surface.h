@@ -42,8 +42,10 @@ public:
   typedef std::vector<Fast::Triangle_3> Triangles;
   typedef CGAL::AABB_tree<CGAL::AABB_traits<Fast, CGAL::AABB_triangle_primitive<Fast, Triangles::const_iterator> > > Tree;
 
-  template <typename TriangleMesh>
-  explicit Distance_to_surface(const TriangleMesh& reference) : cover_(well_shaped_cover(reference)), tree_(cover_.begin(), cover_.end())
+  /// The cover of `reference` is built in parallel when `ConcurrencyTag` is `Parallel_tag`.
+  template <typename TriangleMesh, typename ConcurrencyTag = CGAL::Sequential_tag>
+  explicit Distance_to_surface(const TriangleMesh& reference, ConcurrencyTag = ConcurrencyTag())
+    : cover_(well_shaped_cover<ConcurrencyTag>(reference)), tree_(cover_.begin(), cover_.end())
   {
     tree_.accelerate_distance_queries();
   }

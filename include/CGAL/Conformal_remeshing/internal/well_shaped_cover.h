@@ -13,6 +13,7 @@
 #define CGAL_CONFORMAL_REMESHING_INTERNAL_WELL_SHAPED_COVER_H
 
 #include <CGAL/Conformal_remeshing/internal/constrained_domain.h>
+#include <CGAL/Conformal_remeshing/internal/parallel_for_each_index.h>
 
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Delaunay_mesh_criteria_2.h>
@@ -25,6 +26,7 @@
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
+#include <CGAL/tags.h>
 
 #include <array>
 #include <cmath>
@@ -142,8 +144,10 @@ inline bool append_retriangulation(const Coplanar_region& region, const std::vec
 /// its planar regions), for closest-point searches: the faces of each edge-connected region of
 /// at least `smallest_region` exactly coplanar faces (by `Epick`'s predicates on the points
 /// rounded to double) replaced by its outline's constrained Delaunay triangulation, refined to
-/// well-shaped triangles; every other face as it is.
-template <typename TriangleMesh>
+/// well-shaped triangles; every other face as it is. The regions are retriangulated in parallel
+/// with TBB when `ConcurrencyTag` is `Parallel_tag`; the triangles come in the same order either
+/// way (region by region, in the order the regions are found).
+template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh>
 std::vector<CGAL::Simple_cartesian<double>::Triangle_3> well_shaped_cover(const TriangleMesh& mesh,
                                                                           std::size_t smallest_region = 16)
 {
@@ -171,6 +175,28 @@ std::vector<CGAL::Simple_cartesian<double>::Triangle_3> well_shaped_cover(const 
 
   std::vector<CGAL::Simple_cartesian<double>::Triangle_3> out;
   out.reserve(face_of.size());
+  // The regions found and not yet appended to `out`, retriangulated a batch at a time (the
+  // batch's triangles are held twice while they are appended: a bounded batch bounds that).
+  std::vector<cover::Coplanar_region> batch;
+  std::size_t batch_faces = 0;
+  const auto append_batch = [&]() {
+    std::vector<std::vector<cover::Triangle_3> > retriangulated(batch.size());
+    std::vector<char> replaced(batch.size(), 0);
+    for_each_index<ConcurrencyTag>(batch.size(), [&](std::size_t i) {
+      if(batch[i].faces.size() >= smallest_region)
+        replaced[i] = cover::append_retriangulation(batch[i], points, retriangulated[i]);
+    });
+    for(std::size_t i = 0; i < batch.size(); ++i)
+      if(replaced[i])
+        out.insert(out.end(), retriangulated[i].begin(), retriangulated[i].end());
+      else
+        for(const auto& f : batch[i].faces)
+          out.push_back(cover::triangle(points[f[0]], points[f[1]], points[f[2]]));
+    batch.clear();
+    batch_faces = 0;
+  };
+  constexpr std::size_t batch_size = std::size_t(1) << 18; // faces
+
   std::vector<int> region_of(face_of.size(), -1);
   std::vector<std::size_t> stack;
   // Regions grow from proper triangles first, which define a plane; what is left (degenerate
@@ -185,7 +211,8 @@ std::vector<CGAL::Simple_cartesian<double>::Triangle_3> well_shaped_cover(const 
       continue;
     // The faces coplanar with `start` reached across edges.
     const int r = regions++;
-    cover::Coplanar_region region;
+    batch.emplace_back();
+    cover::Coplanar_region& region = batch.back();
     region_of[start] = r;
     stack.assign(1, start);
     while(!stack.empty())
@@ -212,10 +239,11 @@ std::vector<CGAL::Simple_cartesian<double>::Triangle_3> well_shaped_cover(const 
           region.outline.push_back({int(get(vim, source(h, mesh))), int(get(vim, target(h, mesh)))});
       }
     }
-    if(region.faces.size() < smallest_region || !cover::append_retriangulation(region, points, out))
-      for(const auto& f : region.faces)
-        out.push_back(cover::triangle(points[f[0]], points[f[1]], points[f[2]]));
+    batch_faces += region.faces.size();
+    if(batch_faces >= batch_size)
+      append_batch();
   }
+  append_batch();
   for(std::size_t k = 0; k < face_of.size(); ++k)
     if(region_of[k] < 0)
     {

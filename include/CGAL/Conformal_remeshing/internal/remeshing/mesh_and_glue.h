@@ -105,7 +105,7 @@ Places_beyond_distance check_surface_distance(const Flattened_surface& surface, 
 {
   const auto start = std::chrono::steady_clock::now();
   if(!to_input)
-    to_input = std::make_unique<Distance_to_surface>(surface.segmentation.mesh);
+    to_input = std::make_unique<Distance_to_surface>(surface.segmentation.mesh, ConcurrencyTag());
   Places_beyond_distance far = places_beyond_distance<ConcurrencyTag>(
     surface.segmentation.mesh, *to_input, glued.mesh, options.maximum_surface_distance, 0.25 * options.target_edge_length);
   report.largest_surface_distance = far.largest;

@@ -421,7 +421,7 @@ Places_beyond_distance places_beyond_distance(const InputMesh& input, const Dist
 
   // The input's vertices, edges and faces, against the output.
   const Indexed_triangles in = indexed_triangles(input);
-  const Distance_to_surface to_output(output);
+  const Distance_to_surface to_output(output, ConcurrencyTag());
   const Mesh_samples in_samples = measured_samples<ConcurrencyTag>(in, to_output, true, squared_half, spacing);
   std::vector<bool> vertex_beyond(in.points.size(), false);
   in_samples.coarse.vertices.mark_beyond(squared_bound, vertex_beyond);
