@@ -915,17 +915,57 @@ void triangulate_polygons(const std::vector<Point>& points, std::vector<std::vec
   report.file_face = std::move(file_face);
 }
 
+// Whether a soup is a polygon mesh by CGAL's is_polygon_soup_a_polygon_mesh(), remembered until
+// a repair changes the soup: the test builds a set of all the soup's edges (seconds on a million
+// faces), and reading asks it up to three times.
+class Polygon_mesh_test
+{
+public:
+  bool operator()(const std::vector<std::vector<std::size_t> >& polygons)
+  {
+    if(!known_)
+      is_mesh_ = Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons);
+    known_ = true;
+    return is_mesh_;
+  }
+  void soup_changed() { known_ = false; }
+
+private:
+  bool known_ = false, is_mesh_ = false;
+};
+
+// Whether an edge of `polygons` has one face (each directed edge taken once, as in a polygon mesh).
+inline bool has_border_edge(const std::vector<std::vector<std::size_t> >& polygons)
+{
+  std::vector<std::pair<std::size_t, std::size_t> > edges;
+  for(const std::vector<std::size_t>& polygon : polygons)
+    for(std::size_t i = 0; i < polygon.size(); ++i)
+      edges.push_back(std::minmax(polygon[i], polygon[(i + 1) % polygon.size()]));
+  std::sort(edges.begin(), edges.end());
+  for(std::size_t i = 0; i < edges.size();)
+  {
+    std::size_t j = i + 1;
+    while(j < edges.size() && edges[j] == edges[i])
+      ++j;
+    if(j - i == 1)
+      return true;
+    i = j;
+  }
+  return false;
+}
+
 // Border edges joined by CGAL's stitch_borders(), on the mesh of the soup when it is one, with
-// finite coordinates (the stitching sorts the points) and no isolated vertex (the mesh would drop
-// it unsaid); the faces keep their order.
+// finite coordinates (the stitching sorts the points), no isolated vertex (the mesh would drop
+// it unsaid) and a border (a closed surface has nothing to stitch); the faces keep their order.
 template <typename Point>
-void stitch_borders(std::vector<Point>& points, std::vector<std::vector<std::size_t> >& polygons, std::size_t& stitched)
+void stitch_borders(std::vector<Point>& points, std::vector<std::vector<std::size_t> >& polygons, Polygon_mesh_test& is_mesh,
+                    std::size_t& stitched)
 {
   stitched = 0;
   const bool finite = std::all_of(points.begin(), points.end(), [](const Point& p) {
     return std::isfinite(CGAL::to_double(p.x())) && std::isfinite(CGAL::to_double(p.y())) && std::isfinite(CGAL::to_double(p.z()));
   });
-  if(!finite || polygons.empty() || !Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons))
+  if(!finite || polygons.empty() || !is_mesh(polygons) || !has_border_edge(polygons))
     return;
   CGAL::Surface_mesh<Point> mesh;
   Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, mesh);
@@ -938,11 +978,12 @@ void stitch_borders(std::vector<Point>& points, std::vector<std::vector<std::siz
   points.clear();
   polygons.clear();
   Polygon_mesh_processing::polygon_mesh_to_polygon_soup(mesh, points, polygons);
+  is_mesh.soup_changed();
 }
 
 template <typename Point>
 void repair_polygon_soup(std::vector<Point>& points, std::vector<std::vector<std::size_t> >& polygons,
-                         const Input_repairs& repairs, Input_repair_report& report)
+                         const Input_repairs& repairs, Input_repair_report& report, Polygon_mesh_test& is_mesh)
 {
   report = Input_repair_report();
   report.file_faces = polygons.size();
@@ -956,15 +997,21 @@ void repair_polygon_soup(std::vector<Point>& points, std::vector<std::vector<std
         return;
   if(repairs.remove_isolated_vertices)
     report.removed_isolated_vertices = remove_isolated_points(points, polygons);
-  if(repairs.split_non_manifold && std::all_of(polygons.begin(), polygons.end(), has_distinct_corners)
-     && !Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons))
+  // (Each repair that returns a count of 0 left the soup as it was.)
+  if(repairs.split_non_manifold && std::all_of(polygons.begin(), polygons.end(), has_distinct_corners) && !is_mesh(polygons))
     report.split_vertices = split_non_manifold_elements(points, polygons);
+  if(report.split_vertices > 0)
+    is_mesh.soup_changed();
   if(repairs.orient_faces && has_repeated_directed_edge(polygons))
     orient_faces(points, polygons, report.reoriented_faces);
+  if(report.reoriented_faces > 0)
+    is_mesh.soup_changed();
   if(repairs.stitch_borders && report.split_vertices == 0) // the borders of the cut sheets stay apart
-    stitch_borders(points, polygons, report.stitched_vertices);
+    stitch_borders(points, polygons, is_mesh, report.stitched_vertices);
   if(repairs.triangulate_polygons)
     triangulate_polygons(points, polygons, report);
+  if(report.triangulated_polygons > 0)
+    is_mesh.soup_changed();
 }
 
 } // namespace internal
@@ -1064,13 +1111,14 @@ Mesh_check_report read_and_check_mesh(const std::string& filename, PolygonMesh& 
                 "cannot read '" + filename + "': not a valid " + extension + " file (" + problem + ")");
   }
 
-  internal::repair_polygon_soup(points, polygons, repairs, repaired);
+  internal::Polygon_mesh_test is_mesh;
+  internal::repair_polygon_soup(points, polygons, repairs, repaired, is_mesh);
   Mesh_check_report report = check_polygon_soup<Kernel>(points, polygons);
 
   clear(mesh);
   const bool buildable = !polygons.empty() && report.count(Mesh_defect::INVALID_VERTEX_INDEX) == 0
                          && report.count(Mesh_defect::NON_MANIFOLD_VERTEX) == 0
-                         && Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons);
+                         && is_mesh(polygons);
   if(buildable)
   {
     Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, mesh);
