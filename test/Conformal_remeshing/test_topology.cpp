@@ -606,6 +606,38 @@ TEST(BoundarySamples, TheTwoSidesOfABandThatClosesOnItselfAreSampledOutOfPhase)
   EXPECT_GT(smallest_on_bands, 30.);
 }
 
+TEST(Segmentation, PatchTopologyIsThatOfTheExtractedPatch)
+{
+  // The segmentation counts each patch's genus and boundary loops without building its mesh;
+  // extract_patch() builds it. They agree on every patch, and on the whole segmented surface
+  // taken as one patch (cut apart along its features: a high genus and many loops).
+  Mesh plate, box = chamfered_box(3.);
+  CGAL::Conformal_remeshing::benchmarks::make_perforated_plate(plate, CGAL::Conformal_remeshing::benchmarks::Perforated_plate_parameters());
+  for(const Mesh* mesh : {&plate, &box})
+  {
+    CR::Poly_annulus_segmentation s;
+    CR::segment_into_poly_annuli(*mesh, s);
+    const std::vector<std::vector<CR::Poly_annulus_segmentation::Face> > patches = s.faces_of_patches();
+    ASSERT_GT(patches.size(), 1u);
+    for(const auto& faces : patches)
+    {
+      const CR::Extracted_patch extracted = CR::extract_patch(s, faces);
+      const std::pair<long, std::size_t> counted = CR::internal::segmentation::patch_topology(s, faces);
+      EXPECT_EQ(counted.first, extracted.genus);
+      EXPECT_EQ(counted.second, extracted.boundary_loops);
+      EXPECT_TRUE(extracted.is_poly_annulus());
+    }
+    for(auto f : s.mesh.faces())
+      s.patch[f] = 0;
+    const std::vector<CR::Poly_annulus_segmentation::Face> all(s.mesh.faces().begin(), s.mesh.faces().end());
+    const CR::Extracted_patch extracted = CR::extract_patch(s, all);
+    const std::pair<long, std::size_t> counted = CR::internal::segmentation::patch_topology(s, all);
+    EXPECT_EQ(counted.first, extracted.genus);
+    EXPECT_EQ(counted.second, extracted.boundary_loops);
+    EXPECT_GT(extracted.boundary_loops, 1u);
+  }
+}
+
 TEST(RemeshAnyTopology, FeatureInsideAPatchIsKept)
 {
   // A given feature chain that ends inside the surface (it separates nothing): the patch is slit

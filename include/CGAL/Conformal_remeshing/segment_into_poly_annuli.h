@@ -30,7 +30,9 @@
 #include <cmath>
 #include <map>
 #include <numeric>
+#include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 
@@ -176,21 +178,24 @@ inline std::size_t find_root(std::vector<std::size_t>& parent, std::size_t i)
 } // namespace segmentation
 } // namespace internal
 
-/// \ingroup PkgConformalRemeshingRef
-/// Copies the faces `faces` of one patch of `s` into a mesh of their own, with its topology.
-inline Extracted_patch extract_patch(const Poly_annulus_segmentation& s, const std::vector<Poly_annulus_segmentation::Face>& faces)
+namespace internal {
+namespace segmentation {
+
+// The vertex of the patch at each corner of `faces` (corner 3i+c: the target of the c-th halfedge
+// of `faces[i]` from its `halfedge()`), as a representative corner: corners of the same vertex
+// in faces joined through an edge of the patch that is not a feature are the same patch vertex
+// (a fan), so a pinched vertex gives one vertex per fan, and a vertex inside a feature chain one
+// per side.
+inline std::vector<std::size_t> patch_vertex_of_corners(const Segmentation& s, const std::vector<Segmentation::Face>& faces)
 {
-  typedef Poly_annulus_segmentation::Face Face;
-  const Poly_annulus_segmentation::Mesh& m = s.mesh;
+  typedef Segmentation::Face Face;
+  const Mesh& m = s.mesh;
   std::map<Face, std::size_t> local_face;
   for(std::size_t i = 0; i < faces.size(); ++i)
     local_face[faces[i]] = i;
-  // Corners 3i+c of local face i; corners of the same vertex in faces joined through an edge of
-  // the patch that is not a feature are the same patch vertex (a fan), so a pinched vertex gives
-  // one vertex per fan, and a vertex inside a feature chain one per side.
   std::vector<std::size_t> parent(3 * faces.size());
   std::iota(parent.begin(), parent.end(), std::size_t(0));
-  auto corner = [&](Face f, Poly_annulus_segmentation::Vertex v) {
+  auto corner = [&](Face f, Segmentation::Vertex v) {
     std::size_t c = 0;
     for(auto h : CGAL::halfedges_around_face(m.halfedge(f), m))
     {
@@ -204,14 +209,69 @@ inline Extracted_patch extract_patch(const Poly_annulus_segmentation& s, const s
     for(auto h : CGAL::halfedges_around_face(m.halfedge(faces[i]), m))
     {
       const Face g = m.face(m.opposite(h));
-      if(g == Poly_annulus_segmentation::Mesh::null_face() || s.patch[g] != s.patch[faces[i]] || !(faces[i] < g)
-         || s.is_feature[m.edge(h)])
+      if(g == Mesh::null_face() || s.patch[g] != s.patch[faces[i]] || !(faces[i] < g) || s.is_feature[m.edge(h)])
         continue;
       for(auto v : {m.source(h), m.target(h)})
-        parent[internal::segmentation::find_root(parent, corner(faces[i], v))] =
-          internal::segmentation::find_root(parent, corner(g, v));
+        parent[find_root(parent, corner(faces[i], v))] = find_root(parent, corner(g, v));
     }
+  for(std::size_t c = 0; c < parent.size(); ++c)
+    parent[c] = find_root(parent, c);
+  return parent;
+}
 
+// The genus and the number of boundary loops of the patch that `extract_patch(s, faces)` builds,
+// counted without building it (the segmentation asks them of every patch in every round): its
+// vertices are the corners' patch vertices, its edges the distinct pairs of them along the
+// faces' sides, and each of its boundary loops a cycle of the sides with no face across (a
+// patch vertex is one fan, so at most one such side leaves it).
+inline std::pair<long, std::size_t> patch_topology(const Segmentation& s, const std::vector<Segmentation::Face>& faces)
+{
+  const std::vector<std::size_t> vertex = patch_vertex_of_corners(s, faces);
+  std::vector<std::pair<std::size_t, std::size_t> > sides; // directed, as the faces run
+  sides.reserve(vertex.size());
+  std::size_t vertices = 0;
+  for(std::size_t c = 0; c < vertex.size(); ++c)
+  {
+    vertices += vertex[c] == c;
+    const std::size_t previous = c % 3 == 0 ? c + 2 : c - 1;
+    sides.emplace_back(vertex[previous], vertex[c]);
+  }
+  std::sort(sides.begin(), sides.end());
+  if(std::adjacent_find(sides.begin(), sides.end()) != sides.end())
+    throw Error(Error_code::INVALID_INPUT, "extract_patch: the patch is not a manifold surface (internal error)");
+  // The boundary sides run backwards along the sides without a twin: from each one's target on.
+  std::map<std::size_t, std::size_t> boundary_next; // patch vertex -> the next along the boundary
+  std::size_t edges = 0;
+  for(const auto& side : sides)
+  {
+    const bool twin = std::binary_search(sides.begin(), sides.end(), std::make_pair(side.second, side.first));
+    edges += !twin || side.first < side.second;
+    if(!twin)
+      boundary_next[side.second] = side.first;
+  }
+  std::size_t loops = 0;
+  std::set<std::size_t> seen;
+  for(const auto& start : boundary_next)
+    if(seen.insert(start.first).second)
+    {
+      ++loops;
+      for(std::size_t v = start.second; seen.insert(v).second; v = boundary_next.at(v))
+      {
+      }
+    }
+  const long euler = long(vertices) - long(edges) + long(faces.size());
+  return {(2 - euler - long(loops)) / 2, loops};
+}
+
+} // namespace segmentation
+} // namespace internal
+
+/// \ingroup PkgConformalRemeshingRef
+/// Copies the faces `faces` of one patch of `s` into a mesh of their own, with its topology.
+inline Extracted_patch extract_patch(const Poly_annulus_segmentation& s, const std::vector<Poly_annulus_segmentation::Face>& faces)
+{
+  const Poly_annulus_segmentation::Mesh& m = s.mesh;
+  const std::vector<std::size_t> vertex_of_corner = internal::segmentation::patch_vertex_of_corners(s, faces);
   Extracted_patch patch;
   std::map<std::size_t, Extracted_patch::Mesh::Vertex_index> vertex_of_root;
   for(std::size_t i = 0; i < faces.size(); ++i)
@@ -220,7 +280,7 @@ inline Extracted_patch extract_patch(const Poly_annulus_segmentation& s, const s
     std::size_t c = 0;
     for(auto h : CGAL::halfedges_around_face(m.halfedge(faces[i]), m))
     {
-      const std::size_t root = internal::segmentation::find_root(parent, 3 * i + c);
+      const std::size_t root = vertex_of_corner[3 * i + c];
       auto found = vertex_of_root.find(root);
       if(found == vertex_of_root.end())
       {
@@ -868,9 +928,9 @@ void segment_into_poly_annuli(const TriangleMesh& input, Poly_annulus_segmentati
     const std::vector<std::vector<Face> > patches = s.faces_of_patches();
     for(std::size_t p = 0; p < patches.size(); ++p)
     {
-      const Extracted_patch patch = extract_patch(s, patches[p]);
-      if(!patch.is_poly_annulus())
-        pieces_to_cut.emplace_back(p, patch.genus);
+      const std::pair<long, std::size_t> genus_and_loops = internal::segmentation::patch_topology(s, patches[p]);
+      if(genus_and_loops.first != 0 || genus_and_loops.second == 0) // not a poly-annulus
+        pieces_to_cut.emplace_back(p, genus_and_loops.first);
     }
     if(pieces_to_cut.empty())
       break;
