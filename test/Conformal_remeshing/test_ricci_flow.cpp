@@ -742,6 +742,46 @@ TEST(RicciFlow, CorrespondenceRoundTripAndOrientation)
   EXPECT_EQ(bad, 0);
 }
 
+TEST(RicciFlow, CompactHistoryWalksTheSameWays)
+{
+  // The record in one array gives every walk, both ways, bit for bit; a flip after it is
+  // recorded as it would have been without it.
+  Soup s = cad_sliver_disc(20, 61, 0.4, 0.15);
+  Tri t = from_soup(s);
+  ASSERT_TRUE(CR::discrete_ricci_flow(t, CR::disc_flattening_targets(t), CR::parameters::curvature_tolerance(1e-9)).converged);
+  ASSERT_GT(t.number_of_flips(), 100u);
+  Tri compact = t;
+  compact.compact_history();
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> U(0., 1.);
+  std::vector<Tri::Face_location> points;
+  for(int i = 0; i < 2000; ++i)
+  {
+    double a = U(rng), b = U(rng);
+    if(a + b > 1) { a = 1 - a; b = 1 - b; }
+    points.push_back({static_cast<int>(U(rng) * t.number_of_faces()) % t.number_of_faces(), {{1 - a - b, a, b}}});
+  }
+  const auto same = [](const Tri::Face_location& p, const Tri::Face_location& q) {
+    return p.face == q.face && p.coordinates == q.coordinates;
+  };
+  for(const Tri::Face_location& p : points)
+  {
+    ASSERT_TRUE(same(t.to_input(p), compact.to_input(p)));
+    ASSERT_TRUE(same(t.from_input(t.to_input(p)), compact.from_input(compact.to_input(p))));
+  }
+  // One more flip on both (an interior edge whose quad is convex, flipped however it stands).
+  int flipped = 0;
+  for(int e = 0; e < t.number_of_edges() && flipped == 0; ++e)
+    if(t.flip(e))
+    {
+      ASSERT_TRUE(compact.flip(e));
+      flipped = 1;
+    }
+  ASSERT_EQ(flipped, 1);
+  for(const Tri::Face_location& p : points)
+    ASSERT_TRUE(same(t.to_input(p), compact.to_input(p)));
+}
+
 TEST(RicciFlow, BoundarySplitsKeepConvergenceAndCorrespondence)
 {
   // A cube with one grid cell removed, the faces along the hole made obtuse: a disc whose

@@ -415,6 +415,7 @@ public:
 
     if(!record_history_)
       return true;
+    expand_history();
     const int time = static_cast<int>(timeline_.size());
     timeline_.push_back(static_cast<int>(flips_.size()));
     flips_.push_back(r);
@@ -491,7 +492,10 @@ public:
       he_twin_.resize(he_twin_.size() + 3, -1);
       he_edge_.resize(he_edge_.size() + 3, -1);
       if(record_history_)
+      {
+        expand_history();
         face_events_.emplace_back();
+      }
       return f;
     };
     struct Slot { int vertex, twin, edge; };
@@ -546,6 +550,7 @@ public:
 
     if(!record_history_)
       return vm;
+    expand_history();
     const int time = static_cast<int>(timeline_.size());
     timeline_.push_back(-1 - static_cast<int>(splits_.size()));
     splits_.push_back(r);
@@ -713,9 +718,9 @@ public:
     int time = static_cast<int>(timeline_.size());
     for(;;)
     {
-      const std::vector<int>& ev = face_events_[p.face];
-      auto it = std::lower_bound(ev.begin(), ev.end(), time);
-      if(it == ev.begin())
+      const Events ev = events_of(p.face);
+      const int* it = std::lower_bound(ev.first, ev.second, time);
+      if(it == ev.first)
         return p;
       time = *(--it);
       p = apply_event(time, p, /*forward=*/false);
@@ -729,17 +734,62 @@ public:
     int time = -1;
     for(;;)
     {
-      const std::vector<int>& ev = face_events_[p.face];
-      auto it = std::upper_bound(ev.begin(), ev.end(), time);
-      if(it == ev.end())
+      const Events ev = events_of(p.face);
+      const int* it = std::upper_bound(ev.first, ev.second, time);
+      if(it == ev.second)
         return p;
       time = *it;
       p = apply_event(time, p, /*forward=*/true);
     }
   }
+
+  /// Stores the correspondence record in one array, for `to_input()` and `from_input()` once
+  /// the connectivity no longer changes: a walk back then reads each face's events from one
+  /// place instead of following a pointer per face, and the record takes less memory (a
+  /// triangulation of a million faces has as many lists of a few events). A later flip or split
+  /// restores the growable form first.
+  void compact_history()
+  {
+    if(history_is_compact_)
+      return;
+    compact_event_start_.assign(1, 0);
+    compact_event_start_.reserve(face_events_.size() + 1);
+    compact_events_.clear();
+    for(const std::vector<int>& ev : face_events_)
+    {
+      compact_events_.insert(compact_events_.end(), ev.begin(), ev.end());
+      compact_event_start_.push_back(compact_events_.size());
+    }
+    compact_events_.shrink_to_fit();
+    std::vector<std::vector<int>>().swap(face_events_);
+    history_is_compact_ = true;
+  }
   /// @}
 
 private:
+  typedef std::pair<const int*, const int*> Events;
+
+  // The events of face `f`, in order.
+  Events events_of(int f) const
+  {
+    if(history_is_compact_)
+      return {compact_events_.data() + compact_event_start_[f], compact_events_.data() + compact_event_start_[f + 1]};
+    return {face_events_[f].data(), face_events_[f].data() + face_events_[f].size()};
+  }
+
+  // The growable form of the record, before a flip or split records itself.
+  void expand_history()
+  {
+    if(!history_is_compact_)
+      return;
+    face_events_.resize(compact_event_start_.size() - 1);
+    for(std::size_t f = 0; f < face_events_.size(); ++f)
+      face_events_[f].assign(compact_events_.begin() + compact_event_start_[f], compact_events_.begin() + compact_event_start_[f + 1]);
+    std::vector<std::size_t>().swap(compact_event_start_);
+    std::vector<int>().swap(compact_events_);
+    history_is_compact_ = false;
+  }
+
   struct Flip_record
   {
     int face_a, face_b;
@@ -952,6 +1002,9 @@ private:
     splits_.clear();
     timeline_.clear();
     face_events_.assign(nf, std::vector<int>());
+    compact_event_start_.clear();
+    compact_events_.clear();
+    history_is_compact_ = false;
     std::array<FT, 3> t;
     for(int f = 0; f < nf; ++f)
       if(!internal::ricci_flow::half_angle_tangents(opposite_lengths(f), t))
@@ -968,6 +1021,10 @@ private:
   std::vector<Split_record> splits_;
   std::vector<int> timeline_;                   // event -> flip index, or -1 - split index
   std::vector<std::vector<int>> face_events_;   // per face, the events that touched it, in order
+  // The same after compact_history(): the events of face f at [start[f], start[f + 1]).
+  std::vector<std::size_t> compact_event_start_;
+  std::vector<int> compact_events_;
+  bool history_is_compact_ = false;
   bool record_history_ = true;
 
   friend struct internal::remeshing::Patch_job_serialization;

@@ -915,6 +915,7 @@ Conformal_flattening flatten_patch(const TriangleMesh& mesh, const NamedParamete
   report.seconds_flow = seconds_since(flow_start);
   time_limit.check("after the Ricci flow");
   report_flow(report, state);
+  result.triangulation.compact_history(); // no flip or split follows: only walks back
 
   // --- layout, and the patch region of the final triangulation --------------------------------
   const Clock::time_point layout_start = Clock::now();

@@ -293,6 +293,9 @@ struct Patch_job_serialization
     a.raw(t.splits_.data(), splits);
     transfer(a, t.timeline_);
     transfer(a, t.face_events_);
+    transfer(a, t.compact_event_start_);
+    transfer(a, t.compact_events_);
+    a.raw(&t.history_is_compact_, 1);
     a.raw(&t.record_history_, 1);
   }
 
