@@ -384,6 +384,10 @@ private:
 // The stage of remesh_conformal() a progress message starts; empty when it starts none.
 std::string conformal_stage_of(const std::string& message)
 {
+  if(message.find("checking the distance") != std::string::npos)
+    return "surface_distance";
+  if(message.find("gaps between sheets") != std::string::npos)
+    return "proximity";
   if(message.find("checking") != std::string::npos || message.find("segment") != std::string::npos)
     return "segmentation"; // the report counts the parameter checks with the segmentation
   if(message.find("flatten") != std::string::npos)

@@ -75,14 +75,20 @@ struct Run
   bool completed() const { return present && text("method_completed") == "true"; }
   bool measured() const { return present && text("status") == "ok"; }
 
+  // A stage's figure: its seconds summed, its peak the largest, over the times it started (the
+  // meshing stage starts again for each round of the surface-distance bound).
   double stage(const std::string& name, const std::string& field) const
   {
     if(!present)
       return nan;
+    double value = nan;
     for(const auto& s : json.get_child("stages", no_child()))
       if(s.second.get<std::string>("name", "") == name)
-        return s.second.get<double>(field, nan);
-    return nan;
+      {
+        const double x = s.second.get<double>(field, nan);
+        value = std::isnan(value) ? x : field == "seconds" ? value + x : (std::max)(value, x);
+      }
+    return value;
   }
 
   // The process's peak resident MB up to the end of the method: the largest of the recorded peak
@@ -485,14 +491,15 @@ struct Summary
   // Time and peak memory of every stage against the input size, with the fitted exponents.
   void scaling()
   {
-    const std::vector<std::string> stage_names = {"read_and_check", "segmentation", "flattening", "meshing", "gluing"};
+    const std::vector<std::string> stage_names = {"read_and_check", "segmentation", "flattening", "meshing", "gluing",
+                                                  "surface_distance"};
     md << "## Growth with the input size (" << bm::paper_model_info(bm::scaling_model).name << ")\n\n"
           "Wall seconds and peak resident MB of every stage; exponent k of the least-squares fit "
           "y = c n^k on log-log over the runs that finished (n log n gives the exponent in the last column "
           "on these sizes).\n\n"
           "| input V | output V | read + checks s | segmentation s | flattening s | meshing s | gluing s | "
-          "total s | peak MB: read / seg. / flat. / mesh. / glue | process peak MB | status |\n"
-          "|---|---|---|---|---|---|---|---|---|---|---|\n";
+          "surface distance s | total s | peak MB: read / seg. / flat. / mesh. / glue / dist. | process peak MB | status |\n"
+          "|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     std::vector<double> n;
     std::map<std::string, std::vector<double> > seconds, peaks;
     json.key("scaling").begin_object().field("model", bm::paper_model_info(bm::scaling_model).name);
