@@ -1014,6 +1014,15 @@ void repair_polygon_soup(std::vector<Point>& points, std::vector<std::vector<std
     is_mesh.soup_changed();
 }
 
+// The same, for a soup whose polygon-mesh test is not asked again afterwards.
+template <typename Point>
+void repair_polygon_soup(std::vector<Point>& points, std::vector<std::vector<std::size_t> >& polygons,
+                         const Input_repairs& repairs, Input_repair_report& report)
+{
+  Polygon_mesh_test is_mesh;
+  repair_polygon_soup(points, polygons, repairs, report, is_mesh);
+}
+
 } // namespace internal
 
 /// \ingroup PkgConformalRemeshingIO
