@@ -2,6 +2,8 @@
 
 #include "stage_tests.h"
 
+#include <memory>
+
 TEST(FlipsAfterGluing, FlipAThinPairUnlessItsEdgeIsKeptOrTheQuadFolds)
 {
   // (c, a, b) is a sliver (smallest angle 5.7 degrees) on the edge a-b; flipping a-b into c-d
@@ -339,6 +341,53 @@ TEST(SurfaceDistance, PlacesBeyondTheBoundBothWays)
   const RM::Places_beyond_distance same = RM::places_beyond_distance<CGAL::Sequential_tag>(flat, to_flat, flat, 1e-9, 0.25);
   EXPECT_TRUE(same.places.empty());
   EXPECT_LT(same.largest, 1e-12);
+}
+
+TEST(SurfaceDistance, TheInputsSurfaceIsAskedForOnceAndGivesWhatAPrebuiltOneGives)
+{
+  // A bumpy input (a grid with every other vertex raised) over the same grid flat, the output:
+  // places both ways.
+  typedef K::Point_3 P;
+  const int n = 6;
+  const auto grid = [&](double bump) {
+    Mesh m;
+    std::vector<Mesh::Vertex_index> v;
+    for(int j = 0; j <= n; ++j)
+      for(int i = 0; i <= n; ++i)
+        v.push_back(m.add_vertex(P(i, j, (i + j) % 2 == 0 ? 0. : bump * (1. + 0.01 * i))));
+    for(int j = 0; j < n; ++j)
+      for(int i = 0; i < n; ++i)
+      {
+        const Mesh::Vertex_index a = v[j * (n + 1) + i], b = v[j * (n + 1) + i + 1];
+        const Mesh::Vertex_index c = v[(j + 1) * (n + 1) + i], d = v[(j + 1) * (n + 1) + i + 1];
+        m.add_face(a, b, d);
+        m.add_face(a, d, c);
+      }
+    return m;
+  };
+  const Mesh bumpy = grid(0.6), flat = grid(0.);
+
+  const CR::internal::Distance_to_surface prebuilt(bumpy);
+  const RM::Places_beyond_distance expected = RM::places_beyond_distance<CGAL::Sequential_tag>(bumpy, prebuilt, flat, 0.1, 0.5);
+  int asked = 0;
+  std::unique_ptr<CR::internal::Distance_to_surface> built;
+  const auto on_demand = [&]() -> const CR::internal::Distance_to_surface& {
+    ++asked;
+    built = std::make_unique<CR::internal::Distance_to_surface>(bumpy);
+    return *built;
+  };
+  const RM::Places_beyond_distance found = RM::places_beyond_distance<CGAL::Sequential_tag>(bumpy, on_demand, flat, 0.1, 0.5);
+  EXPECT_EQ(asked, 1);
+  ASSERT_FALSE(expected.places.empty());
+  EXPECT_GT(expected.output_faces, 0u);
+  EXPECT_GT(expected.input_vertices, 0u);
+  EXPECT_EQ(found.places, expected.places); // the same places in the same order
+  EXPECT_EQ(found.largest, expected.largest);
+  EXPECT_EQ(found.farthest, expected.farthest);
+  EXPECT_EQ(found.output_faces, expected.output_faces);
+  EXPECT_EQ(found.input_vertices, expected.input_vertices);
+  EXPECT_EQ(found.input_edges, expected.input_edges);
+  EXPECT_EQ(found.input_faces, expected.input_faces);
 }
 
 TEST(SurfaceDistance, ARoundIsKeptWhenItsLargestDistanceOrItsCountBeyondFalls)

@@ -97,17 +97,21 @@ inline Error self_intersection_error(const std::vector<Epick::Point_3>& crossing
 }
 
 /// The places of `glued` beyond the surface-distance bound, the bound's figures of the output
-/// in `report`. `to_input` is built by the first call, for the next ones.
+/// in `report`. `to_input` is built by the first call (once the input's samples are measured
+/// and freed), for the next ones.
 template <typename ConcurrencyTag, typename TriangleMesh>
 Places_beyond_distance check_surface_distance(const Flattened_surface& surface, std::unique_ptr<Distance_to_surface>& to_input,
                                               const Glued_output<TriangleMesh>& glued, const Remeshing_options& options,
                                               Remeshing_report& report, Remeshing_statistics& statistics)
 {
   const auto start = std::chrono::steady_clock::now();
-  if(!to_input)
-    to_input = std::make_unique<Distance_to_surface>(surface.segmentation.mesh, ConcurrencyTag());
+  const auto input_surface = [&]() -> const Distance_to_surface& {
+    if(!to_input)
+      to_input = std::make_unique<Distance_to_surface>(surface.segmentation.mesh, ConcurrencyTag());
+    return *to_input;
+  };
   Places_beyond_distance far = places_beyond_distance<ConcurrencyTag>(
-    surface.segmentation.mesh, *to_input, glued.mesh, options.maximum_surface_distance, 0.25 * options.target_edge_length);
+    surface.segmentation.mesh, input_surface, glued.mesh, options.maximum_surface_distance, 0.25 * options.target_edge_length);
   report.largest_surface_distance = far.largest;
   report.largest_surface_distance_point = {{far.farthest.x(), far.farthest.y(), far.farthest.z()}};
   report.places_still_beyond_surface_distance.clear();

@@ -375,6 +375,70 @@ Mesh_samples measured_samples(const Indexed_triangles& mesh, const Distance_to_s
   return samples;
 }
 
+/// The samples of one surface farther from another than a bound, in the order they were
+/// measured, and the farthest of all its samples: what is kept of a mesh's samples once its
+/// distances are measured (they are the largest memory of the check on a large input).
+struct Samples_beyond
+{
+  std::vector<Fast_point> points; ///< the samples farther than the bound
+  double largest_squared = 0.;    ///< the largest squared distance of a sample
+  Fast_point farthest = Fast_point(0., 0., 0.); ///< the first sample at that distance
+
+  void add(const Distance_samples& samples, double squared_bound)
+  {
+    for(std::size_t i = 0; i < samples.points.size(); ++i)
+    {
+      if(samples.squared[i] > largest_squared)
+      {
+        largest_squared = samples.squared[i];
+        farthest = samples.points[i];
+      }
+      if(samples.squared[i] > squared_bound)
+        points.push_back(samples.points[i]);
+    }
+  }
+
+  void add(const Mesh_samples& samples, double squared_bound)
+  {
+    for(const Distance_samples* s : {&samples.coarse.vertices, &samples.coarse.midpoints, &samples.coarse.centroids,
+                                     &samples.fine_triangles, &samples.fine_edges})
+      add(*s, squared_bound);
+  }
+};
+
+/// The input's vertices, edges and faces measured against the output (see
+/// `places_beyond_distance()`).
+struct Input_beyond_distance
+{
+  Samples_beyond samples;
+  std::size_t vertices = 0, edges = 0, faces = 0; ///< the input's elements with a sample beyond the bound
+  std::vector<std::array<Fast_point, 2> > edges_beyond; ///< the ends of each edge with a sample beyond the bound
+};
+
+/// The input's vertices, edges and faces against the output: its samples, the cover of the output
+/// and the input's indexed copy are freed on return, before the output's faces are measured.
+template <typename ConcurrencyTag, typename InputMesh, typename OutputMesh>
+Input_beyond_distance input_beyond_distance(const InputMesh& input, const OutputMesh& output, double bound, double spacing)
+{
+  const double squared_bound = bound * bound, squared_half = 0.25 * squared_bound;
+  const auto count = [](const std::vector<bool>& flags) { return std::size_t(std::count(flags.begin(), flags.end(), true)); };
+  const Indexed_triangles in = indexed_triangles(input);
+  const Distance_to_surface to_output(output, ConcurrencyTag());
+  const Mesh_samples in_samples = measured_samples<ConcurrencyTag>(in, to_output, true, squared_half, spacing);
+  Input_beyond_distance result;
+  std::vector<bool> vertex_beyond(in.points.size(), false);
+  in_samples.coarse.vertices.mark_beyond(squared_bound, vertex_beyond);
+  const std::vector<bool> edge_beyond = edges_beyond(in, in_samples, squared_bound);
+  result.vertices = count(vertex_beyond);
+  result.edges = count(edge_beyond);
+  result.faces = count(triangles_beyond(in, in_samples, squared_bound));
+  result.samples.add(in_samples, squared_bound);
+  for(std::size_t e = 0; e < in.edges.size(); ++e)
+    if(edge_beyond[e])
+      result.edges_beyond.push_back({{in.points[in.edges[e][0]], in.points[in.edges[e][1]]}});
+  return result;
+}
+
 /// The samples of `output` and of `input` farther from the other than `bound`: the output's
 /// faces (their corners lie on the input) and the input's vertices, edges (where the output cuts
 /// a crease or rounds off a tip) and faces. Every face centroid of both, and every vertex and
@@ -384,69 +448,58 @@ Mesh_samples measured_samples(const Indexed_triangles& mesh, const Distance_to_s
 /// midpoints are not sampled first: a chord that cuts a crease under an edge's midpoint by the
 /// bound has the centroids of its faces about two thirds as far off, beyond half the bound, and
 /// the closest points on the input, a CAD part's fans of slivers, are the expensive queries.
-/// `to_input` measures distances to `input`. The places are thinned to one per cell of
-/// `spacing`.
-template <typename ConcurrencyTag, typename InputMesh, typename OutputMesh>
-Places_beyond_distance places_beyond_distance(const InputMesh& input, const Distance_to_surface& to_input,
+/// `to_input()` gives the `Distance_to_surface` of `input`; it is called once the input's
+/// samples are measured and freed, so that a cover built then is never held with them (nor with
+/// the output's cover). The places are thinned to one per cell of `spacing`, the output's first.
+template <typename ConcurrencyTag, typename InputMesh, typename InputSurface, typename OutputMesh>
+Places_beyond_distance places_beyond_distance(const InputMesh& input, const InputSurface& to_input,
                                               const OutputMesh& output, double bound, double spacing)
 {
   const double squared_bound = bound * bound, squared_half = 0.25 * squared_bound;
+  const Input_beyond_distance from_input = input_beyond_distance<ConcurrencyTag>(input, output, bound, spacing);
+  Samples_beyond from_output;
   Places_beyond_distance result;
+  {
+    const Indexed_triangles out = indexed_triangles(output);
+    const Mesh_samples out_samples = measured_samples<ConcurrencyTag>(out, to_input(), false, squared_half, spacing);
+    const std::vector<bool> faces_beyond = triangles_beyond(out, out_samples, squared_bound);
+    result.output_faces = std::size_t(std::count(faces_beyond.begin(), faces_beyond.end(), true));
+    from_output.add(out_samples, squared_bound);
+  }
+  result.input_vertices = from_input.vertices;
+  result.input_edges = from_input.edges;
+  result.input_faces = from_input.faces;
+
   Thinned_places thinned(spacing);
-  double largest = 0.;
-  const auto add_places = [&](const Distance_samples& samples) {
-    for(std::size_t i = 0; i < samples.points.size(); ++i)
-    {
-      if(samples.squared[i] > largest)
-      {
-        largest = samples.squared[i];
-        result.farthest = Epick::Point_3(samples.points[i].x(), samples.points[i].y(), samples.points[i].z());
-      }
-      if(samples.squared[i] > squared_bound)
-        thinned.add(Epick::Point_3(samples.points[i].x(), samples.points[i].y(), samples.points[i].z()), result.places);
-    }
-  };
-  const auto count = [](const std::vector<bool>& flags) { return std::size_t(std::count(flags.begin(), flags.end(), true)); };
-  const auto add_all_places = [&](const Mesh_samples& samples) {
-    for(const Distance_samples* s : {&samples.coarse.vertices, &samples.coarse.midpoints, &samples.coarse.centroids,
-                                     &samples.fine_triangles, &samples.fine_edges})
-      add_places(*s);
-  };
-
-  // The output's faces, against the input (their corners lie on it).
-  const Indexed_triangles out = indexed_triangles(output);
-  const Mesh_samples out_samples = measured_samples<ConcurrencyTag>(out, to_input, false, squared_half, spacing);
-  result.output_faces = count(triangles_beyond(out, out_samples, squared_bound));
-  add_all_places(out_samples);
-
-  // The input's vertices, edges and faces, against the output.
-  const Indexed_triangles in = indexed_triangles(input);
-  const Distance_to_surface to_output(output, ConcurrencyTag());
-  const Mesh_samples in_samples = measured_samples<ConcurrencyTag>(in, to_output, true, squared_half, spacing);
-  std::vector<bool> vertex_beyond(in.points.size(), false);
-  in_samples.coarse.vertices.mark_beyond(squared_bound, vertex_beyond);
-  const std::vector<bool> edge_beyond = edges_beyond(in, in_samples, squared_bound);
-  result.input_vertices = count(vertex_beyond);
-  result.input_edges = count(edge_beyond);
-  result.input_faces = count(triangles_beyond(in, in_samples, squared_bound));
-  add_all_places(in_samples);
+  for(const Samples_beyond* samples : std::array<const Samples_beyond*, 2>{{&from_output, &from_input.samples}})
+    for(const Fast_point& p : samples->points)
+      thinned.add(Epick::Point_3(p.x(), p.y(), p.z()), result.places);
+  const Samples_beyond& farther = from_input.samples.largest_squared > from_output.largest_squared ? from_input.samples : from_output;
+  result.largest = std::sqrt(farther.largest_squared);
+  result.farthest = Epick::Point_3(farther.farthest.x(), farther.farthest.y(), farther.farthest.z());
   // An input edge beyond the bound somewhere is a crease the output cuts there; where it does
   // not cut it this time is chance (where the output's vertices fell), so the whole edge
   // becomes places: a CAD edge is then meshed finer along its length at once, a scan's short
   // edge where it is.
-  for(std::size_t e = 0; e < in.edges.size(); ++e)
-    if(edge_beyond[e])
+  for(const std::array<Fast_point, 2>& ends : from_input.edges_beyond)
+  {
+    const Fast_point &a = ends[0], &b = ends[1];
+    const std::size_t n = sample_intervals(std::sqrt(CGAL::squared_distance(a, b)), spacing, std::size_t(-1));
+    for(std::size_t k = 0; k <= n; ++k)
     {
-      const Fast_point &a = in.points[in.edges[e][0]], &b = in.points[in.edges[e][1]];
-      const std::size_t n = sample_intervals(std::sqrt(CGAL::squared_distance(a, b)), spacing, std::size_t(-1));
-      for(std::size_t k = 0; k <= n; ++k)
-      {
-        const Fast_point p = a + (double(k) / double(n)) * (b - a);
-        thinned.add(Epick::Point_3(p.x(), p.y(), p.z()), result.places);
-      }
+      const Fast_point p = a + (double(k) / double(n)) * (b - a);
+      thinned.add(Epick::Point_3(p.x(), p.y(), p.z()), result.places);
     }
-  result.largest = std::sqrt(largest);
+  }
   return result;
+}
+
+/// `places_beyond_distance()` with the input's `Distance_to_surface` at hand.
+template <typename ConcurrencyTag, typename InputMesh, typename OutputMesh>
+Places_beyond_distance places_beyond_distance(const InputMesh& input, const Distance_to_surface& to_input,
+                                              const OutputMesh& output, double bound, double spacing)
+{
+  return places_beyond_distance<ConcurrencyTag>(input, [&]() -> const Distance_to_surface& { return to_input; }, output, bound, spacing);
 }
 
 } // namespace remeshing
