@@ -25,6 +25,7 @@
 
 #include <array>
 #include <complex>
+#include <cstring>
 #include <iostream>
 #include <map>
 #include <string>
@@ -592,6 +593,45 @@ CR::Intrinsic_triangulation<double> intrinsic_triangulation_of(const CR::interna
   return CR::Intrinsic_triangulation<double>(int(patch.points.size()), patch.faces, lengths);
 }
 } // namespace
+
+TEST(ConformalFlatten, CornerCoordinatesAreGivenBackBitForBitAndStoredOnlyWhenNeitherIdentityNorZero)
+{
+  typedef CR::internal::welding::Corner_coordinates Coordinates;
+  const auto same_bits = [](const Coordinates::Value& a, const Coordinates::Value& b) { return std::memcmp(&a, &b, sizeof a) == 0; };
+  const Coordinates::Value split{{{{1., 0., 0.}}, {{0.5, 0.5, 0.}}, {{0., 0., 1.}}}};
+  const Coordinates::Value negative_zero{{{{-0., 0., 0.}}, {{0., 0., 0.}}, {{0., 0., 0.}}}};
+  Coordinates c;
+  c.assign_identity(4);
+  c.set(1, split);
+  c.set(2, Coordinates::Value{});
+  c.push_back(negative_zero); // compares equal to zeros, but is not them bit for bit
+  c.push_back(Coordinates::identity());
+  ASSERT_EQ(c.size(), 6u);
+  EXPECT_TRUE(same_bits(c[0], Coordinates::identity()));
+  EXPECT_TRUE(same_bits(c[1], split));
+  EXPECT_TRUE(same_bits(c[2], Coordinates::Value{}));
+  EXPECT_TRUE(same_bits(c[3], Coordinates::identity()));
+  EXPECT_TRUE(same_bits(c[4], negative_zero));
+  EXPECT_FALSE(same_bits(c[4], Coordinates::Value{}));
+  EXPECT_TRUE(same_bits(c[5], Coordinates::identity()));
+  EXPECT_EQ(c.stored.size(), 2u); // the split face's and the negative zero's
+  // Set again: a stored face keeps its place, an identity face is stored no more.
+  c.set(1, negative_zero);
+  c.set(4, Coordinates::identity());
+  EXPECT_TRUE(same_bits(c[1], negative_zero));
+  EXPECT_TRUE(same_bits(c[4], Coordinates::identity()));
+  EXPECT_EQ(c.stored.size(), 2u);
+
+  // The patch of a mesh: every face an input face, nothing stored.
+  Mesh square;
+  const auto a = square.add_vertex(K::Point_3(0, 0, 0)), b = square.add_vertex(K::Point_3(1, 0, 0));
+  const auto d = square.add_vertex(K::Point_3(1, 1, 0)), e = square.add_vertex(K::Point_3(0, 1, 0));
+  square.add_face(a, b, d);
+  square.add_face(a, d, e);
+  const CR::internal::welding::Indexed_patch patch = indexed_patch_of(square);
+  EXPECT_EQ(patch.input_coordinates.size(), 2u);
+  EXPECT_TRUE(patch.input_coordinates.stored.empty());
+}
 
 TEST(ConformalFlatten, FlatFansAreRetriangulatedAndPointsLocatedInTheirInputFaces)
 {

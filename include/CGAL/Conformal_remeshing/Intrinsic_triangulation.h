@@ -746,12 +746,20 @@ public:
   /// Stores the correspondence record in one array, for `to_input()` and `from_input()` once
   /// the connectivity no longer changes: a walk back then reads each face's events from one
   /// place instead of following a pointer per face, and the record takes less memory (a
-  /// triangulation of a million faces has as many lists of a few events). A later flip or split
-  /// restores the growable form first.
+  /// triangulation of a million faces has as many lists of a few events). The arrays that the
+  /// flips and splits grew give back their unused room too. A later flip or split restores the
+  /// growable form first.
   void compact_history()
   {
     if(history_is_compact_)
       return;
+    for(std::vector<int>* a : {&he_vertex_, &he_twin_, &he_edge_, &edge_he_, &timeline_})
+      a->shrink_to_fit();
+    length_.shrink_to_fit();
+    unflippable_.shrink_to_fit();
+    vertex_on_border_.shrink_to_fit();
+    flips_.shrink_to_fit();
+    splits_.shrink_to_fit();
     compact_event_start_.assign(1, 0);
     compact_event_start_.reserve(face_events_.size() + 1);
     compact_events_.clear();

@@ -334,6 +334,13 @@ void transfer(Archive& a, Flattening_report& r)
 }
 
 template <typename Archive>
+void transfer(Archive& a, welding::Corner_coordinates& c)
+{
+  transfer(a, c.slot);
+  transfer(a, c.stored);
+}
+
+template <typename Archive>
 void transfer(Archive& a, welding::Flat_region& r)
 {
   transfer(a, r.vertices);

@@ -7,6 +7,8 @@
 #ifndef CGAL_CONFORMAL_REMESHING_INTERNAL_WELDING_FLAT_REGION_H
 #define CGAL_CONFORMAL_REMESHING_INTERNAL_WELDING_FLAT_REGION_H
 
+#include <CGAL/Conformal_remeshing/internal/welding/corner_coordinates.h>
+
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include <algorithm>
@@ -42,7 +44,7 @@ struct Flat_region
   std::vector<std::array<int, 3> > neighbor; // the face across side (c, c+1), or -1
   std::vector<int> fan_start, fan;           // faces around each vertex, counterclockwise
   std::vector<int> input_face;               // the input face each original face lies in,
-  std::vector<std::array<std::array<double, 3>, 3> > input_coordinates; // and its corners there
+  Corner_coordinates input_coordinates;      // and its corners there
   /// for a vertex the retriangulation added inside the region, the original face holding it (it
   /// has no fan of original faces); -1 for the region's own vertices
   std::vector<int> containing_face;

@@ -470,7 +470,7 @@ private:
       {
         patch_.faces[region[i]] = corners;
         patch_.input_face[region[i]] = index;
-        patch_.input_coordinates[region[i]] = {};
+        patch_.input_coordinates.set(region[i], {});
       }
       else
       {

@@ -60,7 +60,7 @@ struct Indexed_patch
   std::size_t number_of_input_vertices = 0;
   std::vector<std::array<int, 3> > faces;           // counterclockwise
   std::vector<int> input_face;                      // the input face each face lies in, or -1 - region
-  std::vector<std::array<Vec3, 3> > input_coordinates; // barycentric coordinates of the corners there
+  Corner_coordinates input_coordinates;            // barycentric coordinates of the corners there
   std::vector<Flat_region> flat_regions;
   /// the intrinsic lengths of the edges inside developed flat regions (across a bend, the
   /// straight line of the unfolding is longer than the chord in space)
@@ -141,6 +141,12 @@ struct Indexed_patch
     for(std::size_t i = 0; i < loop.size(); ++i)
       refine_boundary_edge(loop[i], loop[(i + 1) % loop.size()], max_length, face_of, refined);
     boundary_loops[loop_index] = refined;
+    // The splits grew the arrays by doubling their room; the patch is kept, with its
+    // flattening, until the output is glued (on a large part, a tenth of the run's memory).
+    points.shrink_to_fit();
+    faces.shrink_to_fit();
+    input_face.shrink_to_fit();
+    input_coordinates.shrink_to_fit();
   }
 
 private:
@@ -201,11 +207,12 @@ private:
       const int f = it->second, x = side.first, y = side.second;
       const int c = int(std::find(faces[f].begin(), faces[f].end(), x) - faces[f].begin());
       const int o = faces[f][(c + 2) % 3];
-      const Vec3 cx = input_coordinates[f][c], cy = input_coordinates[f][(c + 1) % 3], co = input_coordinates[f][(c + 2) % 3];
+      const Corner_coordinates::Value cf = input_coordinates[f];
+      const Vec3 cx = cf[c], cy = cf[(c + 1) % 3], co = cf[(c + 2) % 3];
       const Vec3 cm = midpoint(cx, cy);
       const int g = int(faces.size());
       faces[f] = {{x, m, o}};
-      input_coordinates[f] = {{cx, cm, co}};
+      input_coordinates.set(f, {{cx, cm, co}});
       faces.push_back({{m, y, o}});
       input_face.push_back(input_face[f]);
       input_coordinates.push_back({{cm, cy, co}});
@@ -235,7 +242,7 @@ Indexed_patch make_indexed_patch(const TriangleMesh& mesh, VertexPointMap vpm, V
   patch.number_of_input_vertices = patch.points.size();
   patch.faces.resize(num_faces(mesh));
   patch.input_face.resize(num_faces(mesh));
-  patch.input_coordinates.resize(num_faces(mesh));
+  patch.input_coordinates.assign_identity(num_faces(mesh));
   for(auto f : faces(mesh))
   {
     const std::size_t i = get(fim, f);
@@ -244,7 +251,6 @@ Indexed_patch make_indexed_patch(const TriangleMesh& mesh, VertexPointMap vpm, V
     patch.faces[i] = {{int(get(vim, source(h, mesh))), int(get(vim, target(h, mesh))),
                        int(get(vim, target(next(h, mesh), mesh)))}};
     patch.input_face[i] = int(i);
-    patch.input_coordinates[i] = {{Vec3{{1., 0., 0.}}, Vec3{{0., 1., 0.}}, Vec3{{0., 0., 1.}}}};
   }
   std::unordered_map<halfedge_descriptor, bool> seen;
   for(halfedge_descriptor h : halfedges(mesh))
