@@ -7,7 +7,7 @@
 // which has no input face of its own and keeps zeros; only the faces split along the welded
 // boundary have other coordinates. Those alone are stored, so that a face takes 4 bytes instead
 // of 72: the patches are kept, with their flattenings, until the output is glued, and on a large
-// part their coordinates were a tenth of the run's memory.
+// part 72 bytes a face would be a tenth of the run's memory.
 
 #ifndef CGAL_CONFORMAL_REMESHING_INTERNAL_WELDING_CORNER_COORDINATES_H
 #define CGAL_CONFORMAL_REMESHING_INTERNAL_WELDING_CORNER_COORDINATES_H
