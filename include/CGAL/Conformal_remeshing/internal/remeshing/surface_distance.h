@@ -375,6 +375,9 @@ Mesh_samples measured_samples(const Indexed_triangles& mesh, const Distance_to_s
   return samples;
 }
 
+/// The number of flags set.
+inline std::size_t count_set(const std::vector<bool>& flags) { return std::size_t(std::count(flags.begin(), flags.end(), true)); }
+
 /// The samples of one surface farther from another than a bound, in the order they were
 /// measured, and the farthest of all its samples: what is kept of a mesh's samples once its
 /// distances are measured (they are the largest memory of the check on a large input).
@@ -421,7 +424,6 @@ template <typename ConcurrencyTag, typename InputMesh, typename OutputMesh>
 Input_beyond_distance input_beyond_distance(const InputMesh& input, const OutputMesh& output, double bound, double spacing)
 {
   const double squared_bound = bound * bound, squared_half = 0.25 * squared_bound;
-  const auto count = [](const std::vector<bool>& flags) { return std::size_t(std::count(flags.begin(), flags.end(), true)); };
   const Indexed_triangles in = indexed_triangles(input);
   const Distance_to_surface to_output(output, ConcurrencyTag());
   const Mesh_samples in_samples = measured_samples<ConcurrencyTag>(in, to_output, true, squared_half, spacing);
@@ -429,9 +431,9 @@ Input_beyond_distance input_beyond_distance(const InputMesh& input, const Output
   std::vector<bool> vertex_beyond(in.points.size(), false);
   in_samples.coarse.vertices.mark_beyond(squared_bound, vertex_beyond);
   const std::vector<bool> edge_beyond = edges_beyond(in, in_samples, squared_bound);
-  result.vertices = count(vertex_beyond);
-  result.edges = count(edge_beyond);
-  result.faces = count(triangles_beyond(in, in_samples, squared_bound));
+  result.vertices = count_set(vertex_beyond);
+  result.edges = count_set(edge_beyond);
+  result.faces = count_set(triangles_beyond(in, in_samples, squared_bound));
   result.samples.add(in_samples, squared_bound);
   for(std::size_t e = 0; e < in.edges.size(); ++e)
     if(edge_beyond[e])
@@ -462,8 +464,7 @@ Places_beyond_distance places_beyond_distance(const InputMesh& input, const Inpu
   {
     const Indexed_triangles out = indexed_triangles(output);
     const Mesh_samples out_samples = measured_samples<ConcurrencyTag>(out, to_input(), false, squared_half, spacing);
-    const std::vector<bool> faces_beyond = triangles_beyond(out, out_samples, squared_bound);
-    result.output_faces = std::size_t(std::count(faces_beyond.begin(), faces_beyond.end(), true));
+    result.output_faces = count_set(triangles_beyond(out, out_samples, squared_bound));
     from_output.add(out_samples, squared_bound);
   }
   result.input_vertices = from_input.vertices;

@@ -141,8 +141,8 @@ struct Indexed_patch
     for(std::size_t i = 0; i < loop.size(); ++i)
       refine_boundary_edge(loop[i], loop[(i + 1) % loop.size()], max_length, face_of, refined);
     boundary_loops[loop_index] = refined;
-    // The splits grew the arrays by doubling their room; the patch is kept, with its
-    // flattening, until the output is glued (on a large part, a tenth of the run's memory).
+    // The splits grew the arrays by doubling their room, which the patch, kept with its
+    // flattening until the output is glued, does not need.
     points.shrink_to_fit();
     faces.shrink_to_fit();
     input_face.shrink_to_fit();
