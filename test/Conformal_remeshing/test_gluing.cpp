@@ -2,6 +2,11 @@
 
 #include "stage_tests.h"
 
+#include <CGAL/Polygon_mesh_processing/bbox.h>
+#include <CGAL/Polygon_mesh_processing/connected_components.h>
+#include <CGAL/boost/graph/copy_face_graph.h>
+
+#include <limits>
 #include <memory>
 
 TEST(FlipsAfterGluing, FlipAThinPairUnlessItsEdgeIsKeptOrTheQuadFolds)
@@ -388,6 +393,48 @@ TEST(SurfaceDistance, TheInputsSurfaceIsAskedForOnceAndGivesWhatAPrebuiltOneGive
   EXPECT_EQ(found.input_vertices, expected.input_vertices);
   EXPECT_EQ(found.input_edges, expected.input_edges);
   EXPECT_EQ(found.input_faces, expected.input_faces);
+}
+
+TEST(SurfaceDistance, HintsFromEveryEighthCoverTriangleFindTheClosestPointsOfAllFaces)
+{
+  // A CAD-like plate (fans of slivers) and, far from it, a disc of slivers: the queries in spatial
+  // order jump from one to the other, and start from hints taken on an eighth of the cover.
+  Mesh surface;
+  bm::make_perforated_plate(surface, bm::Perforated_plate_parameters());
+  Mesh disc;
+  bm::make_sliver_fan_disc(disc, 64, 3.);
+  for(Mesh::Vertex_index v : disc.vertices())
+    disc.point(v) = disc.point(v) + K::Vector_3(40., -25., 7.);
+  CGAL::copy_face_graph(disc, surface);
+  ASSERT_EQ(CGAL::Polygon_mesh_processing::connected_components(
+              surface, surface.add_property_map<Mesh::Face_index, std::size_t>("f:component").first),
+            2u);
+  const CGAL::Bbox_3 box = CGAL::Polygon_mesh_processing::bbox(surface);
+  std::mt19937_64 generator(7);
+  std::uniform_real_distribution<double> x(box.xmin() - 5., box.xmax() + 5.), y(box.ymin() - 5., box.ymax() + 5.),
+    z(box.zmin() - 5., box.zmax() + 5.);
+  std::vector<CR::internal::Distance_to_surface::Fast::Point_3> queries;
+  for(int i = 0; i < 3000; ++i)
+    queries.emplace_back(x(generator), y(generator), z(generator));
+  for(Mesh::Vertex_index v : surface.vertices()) // and points on the surface, at distance 0
+    queries.emplace_back(surface.point(v).x(), surface.point(v).y(), surface.point(v).z());
+
+  const CR::internal::Distance_to_surface to_surface(surface);
+  const std::vector<double> found = to_surface.squared_distances<CGAL::Sequential_tag>(queries);
+  ASSERT_EQ(found.size(), queries.size());
+  for(std::size_t i = 0; i < queries.size(); ++i)
+  {
+    const K::Point_3 q(queries[i].x(), queries[i].y(), queries[i].z());
+    double nearest = std::numeric_limits<double>::infinity();
+    for(Mesh::Face_index f : surface.faces())
+    {
+      const Mesh::Halfedge_index h = surface.halfedge(f);
+      const K::Triangle_3 t(surface.point(surface.source(h)), surface.point(surface.target(h)),
+                            surface.point(surface.target(surface.next(h))));
+      nearest = (std::min)(nearest, CGAL::squared_distance(q, t));
+    }
+    EXPECT_NEAR(std::sqrt(found[i]), std::sqrt(nearest), 1e-9 * (1. + std::sqrt(nearest))) << q;
+  }
 }
 
 TEST(SurfaceDistance, ARoundIsKeptWhenItsLargestDistanceOrItsCountBeyondFalls)
