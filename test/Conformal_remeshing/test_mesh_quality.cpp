@@ -364,6 +364,36 @@ TEST(ReferenceComparison, CoverBuiltInParallelIsTheSameTriangleForTriangle)
       ASSERT_EQ(in_parallel[i][k], in_order[i][k]) << "triangle " << i;
 }
 
+TEST(ReferenceComparison, IndexedCoverSharesEachCornerAmongItsTriangles)
+{
+  // The closest-point tree holds the cover as corners indexed into shared points: the mesh's
+  // vertices first, by index, then the points the retriangulations of the fans added.
+  Mesh plate;
+  CGAL::Conformal_remeshing::benchmarks::make_perforated_plate(plate, CGAL::Conformal_remeshing::benchmarks::Perforated_plate_parameters());
+  typedef CGAL::Simple_cartesian<double> Fast;
+  const CR::internal::Indexed_cover cover = CR::internal::well_shaped_indexed_cover(plate);
+  const std::vector<Fast::Triangle_3> triangles = CR::internal::well_shaped_cover(plate);
+  ASSERT_EQ(cover.triangles.size(), triangles.size());
+  for(std::size_t t = 0; t < triangles.size(); ++t)
+    ASSERT_EQ(cover.triangle(t), triangles[t]) << "triangle " << t;
+
+  const std::size_t vertices = plate.number_of_vertices();
+  ASSERT_GT(cover.points.size(), vertices); // the fans' retriangulations added points
+  for(Mesh::Vertex_index v : plate.vertices())
+    EXPECT_EQ(cover.points[std::size_t(v)], Fast::Point_3(plate.point(v).x(), plate.point(v).y(), plate.point(v).z()));
+  std::vector<std::size_t> uses(cover.points.size(), 0);
+  for(const auto& t : cover.triangles)
+    for(std::uint32_t c : t)
+    {
+      ASSERT_LT(std::size_t(c), cover.points.size());
+      ++uses[c];
+    }
+  // An added point splits a side or a triangle: stored once, it is the corner of two triangles
+  // or more.
+  for(std::size_t i = vertices; i < cover.points.size(); ++i)
+    EXPECT_GE(uses[i], 2u) << "added point " << i;
+}
+
 TEST(FaceDeviations, OnlyTheFacesAroundARaisedVertexStrayAndByHowMuch)
 {
   const Mesh reference = grid(8);

@@ -10,16 +10,20 @@
 #include <CGAL/Conformal_remeshing/internal/parallel_for_each_index.h>
 #include <CGAL/Conformal_remeshing/internal/well_shaped_cover.h>
 
+#include <CGAL/AABB_primitive.h>
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
-#include <CGAL/AABB_triangle_primitive.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Spatial_sort_traits_adapter_3.h>
 #include <CGAL/property_map.h>
 #include <CGAL/spatial_sort.h>
 
+#include <boost/iterator/counting_iterator.hpp>
+#include <boost/property_map/property_map.hpp>
+
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <numeric>
 #include <vector>
 
@@ -32,30 +36,57 @@ namespace internal {
 /// at distance 0, and CAD tessellations have flat bounding boxes, so the filtered sphere-box tests
 /// of the exact-predicates kernel are undecided for many nodes and fall back to exact arithmetic
 /// (a third of the time on a large CAD part). A distance needs no exact predicate: rounding moves
-/// it by a few units in the last place. The tree holds `well_shaped_cover(reference)`, not the
-/// faces: the bounding boxes of a CAD fan's long slivers cover their whole face, and every query
-/// there would open all of them. The queries' first guesses come from a search structure over
-/// one vertex of every `hint_stride`-th triangle of the cover: a guess only needs to lie near the
-/// closest point, and CGAL's structure over every triangle (`accelerate_distance_queries()`)
-/// takes about as much memory as the cover's triangles themselves.
+/// it by a few units in the last place. The tree holds the triangles of
+/// `well_shaped_indexed_cover(reference)`, not the faces: the bounding boxes of a CAD fan's long
+/// slivers cover their whole face, and every query there would open all of them. Its primitives
+/// are the triangles' indices, whose coordinates are read from the cover's shared points when
+/// the tree asks for them: three indices a triangle are held, not nine coordinates. The queries'
+/// first guesses come from a search structure over one vertex of every `hint_stride`-th triangle
+/// of the cover: a guess only needs to lie near the closest point, and CGAL's structure over
+/// every triangle (`accelerate_distance_queries()`) takes about as much memory as the cover's
+/// triangles themselves.
 class Distance_to_surface
 {
 public:
   typedef CGAL::Simple_cartesian<double> Fast;
-  typedef std::vector<Fast::Triangle_3> Triangles;
-  typedef CGAL::AABB_tree<CGAL::AABB_traits<Fast, CGAL::AABB_triangle_primitive<Fast, Triangles::const_iterator> > > Tree;
+
+  /// A cover triangle's coordinates by its index, built when the tree asks (the tree's
+  /// primitives are the indices).
+  struct Triangle_of_index
+  {
+    typedef std::uint32_t key_type;
+    typedef Fast::Triangle_3 value_type;
+    typedef value_type reference;
+    typedef boost::readable_property_map_tag category;
+    const Indexed_cover* cover = nullptr;
+    friend value_type get(const Triangle_of_index& map, key_type t) { return map.cover->triangle(t); }
+  };
+  /// A cover triangle's first corner by its index: the primitive's reference point.
+  struct First_corner_of_index
+  {
+    typedef std::uint32_t key_type;
+    typedef Fast::Point_3 value_type;
+    typedef const value_type& reference;
+    typedef boost::readable_property_map_tag category;
+    const Indexed_cover* cover = nullptr;
+    friend reference get(const First_corner_of_index& map, key_type t) { return map.cover->points[map.cover->triangles[t][0]]; }
+  };
+  typedef CGAL::AABB_primitive<std::uint32_t, Triangle_of_index, First_corner_of_index, CGAL::Tag_true, CGAL::Tag_false> Primitive;
+  typedef CGAL::AABB_tree<CGAL::AABB_traits<Fast, Primitive> > Tree;
 
   static constexpr std::size_t hint_stride = 8; ///< one first guess for this many triangles of the cover
 
   /// The cover of `reference` is built in parallel when `ConcurrencyTag` is `Parallel_tag`.
   template <typename TriangleMesh, typename ConcurrencyTag = CGAL::Sequential_tag>
   explicit Distance_to_surface(const TriangleMesh& reference, ConcurrencyTag = ConcurrencyTag())
-    : cover_(well_shaped_cover<ConcurrencyTag>(reference)), tree_(cover_.begin(), cover_.end())
+    : cover_(well_shaped_indexed_cover<ConcurrencyTag>(reference)),
+      tree_(boost::counting_iterator<std::uint32_t>(0), boost::counting_iterator<std::uint32_t>(std::uint32_t(cover_.triangles.size())),
+            Triangle_of_index{&cover_}, First_corner_of_index{&cover_})
   {
     std::vector<Tree::Point_and_primitive_id> hints;
-    hints.reserve(cover_.size() / hint_stride + 1);
-    for(std::size_t i = 0; i < cover_.size(); i += hint_stride)
-      hints.emplace_back(cover_[i].vertex(0), cover_.begin() + std::ptrdiff_t(i));
+    hints.reserve(cover_.triangles.size() / hint_stride + 1);
+    for(std::size_t t = 0; t < cover_.triangles.size(); t += hint_stride)
+      hints.emplace_back(cover_.points[cover_.triangles[t][0]], std::uint32_t(t));
     tree_.accelerate_distance_queries(hints.begin(), hints.end());
   }
   Distance_to_surface(const Distance_to_surface&) = delete;
@@ -98,7 +129,7 @@ public:
   }
 
 private:
-  Triangles cover_;
+  Indexed_cover cover_;
   Tree tree_;
 };
 

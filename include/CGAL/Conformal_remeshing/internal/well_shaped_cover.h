@@ -12,6 +12,7 @@
 #ifndef CGAL_CONFORMAL_REMESHING_INTERNAL_WELL_SHAPED_COVER_H
 #define CGAL_CONFORMAL_REMESHING_INTERNAL_WELL_SHAPED_COVER_H
 
+#include <CGAL/Conformal_remeshing/Error.h>
 #include <CGAL/Conformal_remeshing/internal/constrained_domain.h>
 #include <CGAL/Conformal_remeshing/internal/parallel_for_each_index.h>
 
@@ -31,6 +32,8 @@
 #include <array>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
+#include <limits>
 #include <vector>
 
 namespace CGAL {
@@ -40,13 +43,6 @@ namespace internal {
 namespace cover {
 
 typedef CGAL::Epick::Point_3 Point_3;
-typedef CGAL::Simple_cartesian<double>::Triangle_3 Triangle_3;
-
-inline Triangle_3 triangle(const Point_3& p, const Point_3& q, const Point_3& r)
-{
-  typedef CGAL::Simple_cartesian<double>::Point_3 P;
-  return Triangle_3(P(p.x(), p.y(), p.z()), P(q.x(), q.y(), q.z()), P(r.x(), r.y(), r.z()));
-}
 
 // One coplanar region: its faces as corner indices into `points`, and the sides on its outline.
 struct Coplanar_region
@@ -55,18 +51,26 @@ struct Coplanar_region
   std::vector<std::array<int, 2> > outline;
 };
 
-// Appends to `out` a constrained Delaunay triangulation of `region`'s outline refined by CGAL's
-// Delaunay mesher towards smallest angles of about 20 degrees (no size bound: few points where
-// the outline is coarse; at most about as many steps as the region has faces), lifted back onto
-// the region's plane; false (nothing appended) when that
-// triangulation does not cover the region's area (overlapping faces, crossing sides).
-inline bool append_retriangulation(const Coplanar_region& region, const std::vector<Point_3>& points,
-                                   std::vector<Triangle_3>& out)
+// A region's triangles: a corner `c >= 0` is the mesh's vertex `c`, a corner `c < 0` the point
+// `added[-c - 1]` that the refinement added.
+struct Region_cover
+{
+  std::vector<Point_3> added;
+  std::vector<std::array<std::int64_t, 3> > triangles;
+};
+
+// A constrained Delaunay triangulation of `region`'s outline refined by CGAL's Delaunay mesher
+// towards smallest angles of about 20 degrees (no size bound: few points where the outline is
+// coarse; at most about as many steps as the region has faces), lifted back onto the region's
+// plane, in `out`; false (`out` left empty) when that triangulation does not cover the region's
+// area (overlapping faces, crossing sides).
+inline bool retriangulate(const Coplanar_region& region, const std::vector<Point_3>& points, Region_cover& out)
 {
   typedef CGAL::Epick K;
   struct Index
   {
-    int value = -1; // the mesh vertex, -1 for a point the mesher added
+    int value = -1;          // the mesh vertex, -1 for a point the mesher added
+    std::int64_t added = -1; // such a point's place in `out.added`, once lifted
   };
   typedef CGAL::Triangulation_vertex_base_with_info_2<Index, K, CGAL::Delaunay_mesh_vertex_base_2<K> > Vb;
   typedef CGAL::Delaunay_mesh_face_base_2<
@@ -118,38 +122,62 @@ inline bool append_retriangulation(const Coplanar_region& region, const std::vec
   {
   }
 
-  std::vector<Triangle_3> triangles;
   double covered = 0.;
   for(auto f : cdt.finite_face_handles())
     if(f->is_in_domain())
     {
-      std::array<Point_3, 3> corner;
+      std::array<std::int64_t, 3> corner;
       for(int i = 0; i < 3; ++i)
       {
-        const auto vertex = f->vertex(i);
-        corner[i] = vertex->info().value >= 0 ? points[vertex->info().value] : lift(vertex->point());
+        Index& index = f->vertex(i)->info();
+        if(index.value < 0 && index.added < 0)
+        {
+          index.added = std::int64_t(out.added.size());
+          out.added.push_back(lift(f->vertex(i)->point()));
+        }
+        corner[i] = index.value >= 0 ? index.value : -index.added - 1;
       }
       covered += std::abs(CGAL::area(f->vertex(0)->point(), f->vertex(1)->point(), f->vertex(2)->point()));
-      triangles.push_back(triangle(corner[0], corner[1], corner[2]));
+      out.triangles.push_back(corner);
     }
   if(!(std::abs(covered - area) <= 1e-9 * area))
+  {
+    out = Region_cover();
     return false;
-  out.insert(out.end(), triangles.begin(), triangles.end());
+  }
   return true;
 }
 
 } // namespace cover
 
+/// Triangles whose union is a mesh's surface, as corners indexed into shared points: a triangle
+/// takes 12 bytes, not the 72 of its nine coordinates.
+struct Indexed_cover
+{
+  typedef CGAL::Simple_cartesian<double>::Point_3 Point_3;
+  typedef CGAL::Simple_cartesian<double>::Triangle_3 Triangle_3;
+
+  std::vector<Point_3> points;
+  std::vector<std::array<std::uint32_t, 3> > triangles;
+
+  Triangle_3 triangle(std::size_t t) const
+  {
+    const std::array<std::uint32_t, 3>& c = triangles[t];
+    return Triangle_3(points[c[0]], points[c[1]], points[c[2]]);
+  }
+};
+
 /// Triangles whose union is the surface of `mesh` (up to the rounding of the points added in
 /// its planar regions), for closest-point searches: the faces of each edge-connected region of
 /// at least `smallest_region` exactly coplanar faces (by `Epick`'s predicates on the points
 /// rounded to double) replaced by its outline's constrained Delaunay triangulation, refined to
-/// well-shaped triangles; every other face as it is. The regions are retriangulated in parallel
+/// well-shaped triangles; every other face as it is. The points are the mesh's vertices, by
+/// index, then the points the refinements added. The regions are retriangulated in parallel
 /// with TBB when `ConcurrencyTag` is `Parallel_tag`; the triangles come in the same order either
 /// way (region by region, in the order the regions are found).
+/// \throws Error with `Error_code::INVALID_INPUT` when the cover has more than 2^32 points or triangles.
 template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh>
-std::vector<CGAL::Simple_cartesian<double>::Triangle_3> well_shaped_cover(const TriangleMesh& mesh,
-                                                                          std::size_t smallest_region = 16)
+Indexed_cover well_shaped_indexed_cover(const TriangleMesh& mesh, std::size_t smallest_region = 16)
 {
   using cover::Point_3;
   typedef typename boost::graph_traits<TriangleMesh>::face_descriptor face_descriptor;
@@ -173,25 +201,48 @@ std::vector<CGAL::Simple_cartesian<double>::Triangle_3> well_shaped_cover(const 
                               int(get(vim, target(next(h, mesh), mesh)))};
   };
 
-  std::vector<CGAL::Simple_cartesian<double>::Triangle_3> out;
-  out.reserve(face_of.size());
+  Indexed_cover out;
+  out.points.reserve(points.size());
+  for(const Point_3& p : points)
+    out.points.emplace_back(p.x(), p.y(), p.z());
+  out.triangles.reserve(face_of.size());
+  const auto index = [&](std::size_t i) {
+    if(i > std::size_t((std::numeric_limits<std::uint32_t>::max)()))
+      throw Error(Error_code::INVALID_INPUT, "well_shaped_indexed_cover: more than 2^32 points or triangles to index");
+    return std::uint32_t(i);
+  };
+  const auto append_face = [&](const std::array<int, 3>& c) {
+    out.triangles.push_back({{index(std::size_t(c[0])), index(std::size_t(c[1])), index(std::size_t(c[2]))}});
+  };
   // The regions found and not yet appended to `out`, retriangulated a batch at a time (the
   // batch's triangles are held twice while they are appended: a bounded batch bounds that).
   std::vector<cover::Coplanar_region> batch;
   std::size_t batch_faces = 0;
   const auto append_batch = [&]() {
-    std::vector<std::vector<cover::Triangle_3> > retriangulated(batch.size());
+    std::vector<cover::Region_cover> retriangulated(batch.size());
     std::vector<char> replaced(batch.size(), 0);
     for_each_index<ConcurrencyTag>(batch.size(), [&](std::size_t i) {
       if(batch[i].faces.size() >= smallest_region)
-        replaced[i] = cover::append_retriangulation(batch[i], points, retriangulated[i]);
+        replaced[i] = cover::retriangulate(batch[i], points, retriangulated[i]);
     });
     for(std::size_t i = 0; i < batch.size(); ++i)
       if(replaced[i])
-        out.insert(out.end(), retriangulated[i].begin(), retriangulated[i].end());
+      {
+        const cover::Region_cover& r = retriangulated[i];
+        const std::size_t first_added = out.points.size();
+        for(const Point_3& p : r.added)
+          out.points.emplace_back(p.x(), p.y(), p.z());
+        for(const std::array<std::int64_t, 3>& c : r.triangles)
+        {
+          std::array<std::uint32_t, 3> t;
+          for(int k = 0; k < 3; ++k)
+            t[k] = index(c[k] >= 0 ? std::size_t(c[k]) : first_added + std::size_t(-c[k] - 1));
+          out.triangles.push_back(t);
+        }
+      }
       else
         for(const auto& f : batch[i].faces)
-          out.push_back(cover::triangle(points[f[0]], points[f[1]], points[f[2]]));
+          append_face(f);
     batch.clear();
     batch_faces = 0;
   };
@@ -246,10 +297,24 @@ std::vector<CGAL::Simple_cartesian<double>::Triangle_3> well_shaped_cover(const 
   append_batch();
   for(std::size_t k = 0; k < face_of.size(); ++k)
     if(region_of[k] < 0)
-    {
-      const std::array<int, 3> c = corners(face_of[k]);
-      out.push_back(cover::triangle(points[c[0]], points[c[1]], points[c[2]]));
-    }
+      append_face(corners(face_of[k]));
+  index(out.triangles.size()); // the triangles are indexed too, by the closest-point tree
+  out.points.shrink_to_fit();
+  out.triangles.shrink_to_fit();
+  return out;
+}
+
+/// The triangles of `well_shaped_indexed_cover(mesh, smallest_region)`, each with its corners'
+/// coordinates.
+template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh>
+std::vector<CGAL::Simple_cartesian<double>::Triangle_3> well_shaped_cover(const TriangleMesh& mesh,
+                                                                          std::size_t smallest_region = 16)
+{
+  const Indexed_cover cover = well_shaped_indexed_cover<ConcurrencyTag>(mesh, smallest_region);
+  std::vector<CGAL::Simple_cartesian<double>::Triangle_3> out;
+  out.reserve(cover.triangles.size());
+  for(std::size_t t = 0; t < cover.triangles.size(); ++t)
+    out.push_back(cover.triangle(t));
   return out;
 }
 
