@@ -83,10 +83,11 @@ public:
       tree_(boost::counting_iterator<std::uint32_t>(0), boost::counting_iterator<std::uint32_t>(std::uint32_t(cover_.triangles.size())),
             Triangle_of_index{&cover_}, First_corner_of_index{&cover_})
   {
+    const First_corner_of_index reference_point{&cover_};
     std::vector<Tree::Point_and_primitive_id> hints;
     hints.reserve(cover_.triangles.size() / hint_stride + 1);
     for(std::size_t t = 0; t < cover_.triangles.size(); t += hint_stride)
-      hints.emplace_back(cover_.points[cover_.triangles[t][0]], std::uint32_t(t));
+      hints.emplace_back(get(reference_point, std::uint32_t(t)), std::uint32_t(t));
     tree_.accelerate_distance_queries(hints.begin(), hints.end());
   }
   Distance_to_surface(const Distance_to_surface&) = delete;

@@ -175,7 +175,7 @@ struct Indexed_cover
 /// index, then the points the refinements added. The regions are retriangulated in parallel
 /// with TBB when `ConcurrencyTag` is `Parallel_tag`; the triangles come in the same order either
 /// way (region by region, in the order the regions are found).
-/// \throws Error with `Error_code::INVALID_INPUT` when the cover has more than 2^32 points or triangles.
+/// \throws Error with `Error_code::INVALID_INPUT` when the cover has 2^32 points or triangles or more.
 template <typename ConcurrencyTag = CGAL::Sequential_tag, typename TriangleMesh>
 Indexed_cover well_shaped_indexed_cover(const TriangleMesh& mesh, std::size_t smallest_region = 16)
 {
@@ -206,13 +206,13 @@ Indexed_cover well_shaped_indexed_cover(const TriangleMesh& mesh, std::size_t sm
   for(const Point_3& p : points)
     out.points.emplace_back(p.x(), p.y(), p.z());
   out.triangles.reserve(face_of.size());
-  const auto index = [&](std::size_t i) {
-    if(i > std::size_t((std::numeric_limits<std::uint32_t>::max)()))
-      throw Error(Error_code::INVALID_INPUT, "well_shaped_indexed_cover: more than 2^32 points or triangles to index");
-    return std::uint32_t(i);
+  // The mesh's vertex indices are ints; the points added and the triangles are counted.
+  const auto check_indexable = [](std::size_t count) {
+    if(count > std::size_t((std::numeric_limits<std::uint32_t>::max)()))
+      throw Error(Error_code::INVALID_INPUT, "well_shaped_indexed_cover: 2^32 points or triangles or more to index");
   };
   const auto append_face = [&](const std::array<int, 3>& c) {
-    out.triangles.push_back({{index(std::size_t(c[0])), index(std::size_t(c[1])), index(std::size_t(c[2]))}});
+    out.triangles.push_back({{std::uint32_t(c[0]), std::uint32_t(c[1]), std::uint32_t(c[2])}});
   };
   // The regions found and not yet appended to `out`, retriangulated a batch at a time (the
   // batch's triangles are held twice while they are appended: a bounded batch bounds that).
@@ -232,11 +232,12 @@ Indexed_cover well_shaped_indexed_cover(const TriangleMesh& mesh, std::size_t sm
         const std::size_t first_added = out.points.size();
         for(const Point_3& p : r.added)
           out.points.emplace_back(p.x(), p.y(), p.z());
+        check_indexable(out.points.size());
         for(const std::array<std::int64_t, 3>& c : r.triangles)
         {
           std::array<std::uint32_t, 3> t;
           for(int k = 0; k < 3; ++k)
-            t[k] = index(c[k] >= 0 ? std::size_t(c[k]) : first_added + std::size_t(-c[k] - 1));
+            t[k] = std::uint32_t(c[k] >= 0 ? std::size_t(c[k]) : first_added + std::size_t(-c[k] - 1));
           out.triangles.push_back(t);
         }
       }
@@ -298,7 +299,7 @@ Indexed_cover well_shaped_indexed_cover(const TriangleMesh& mesh, std::size_t sm
   for(std::size_t k = 0; k < face_of.size(); ++k)
     if(region_of[k] < 0)
       append_face(corners(face_of[k]));
-  index(out.triangles.size()); // the triangles are indexed too, by the closest-point tree
+  check_indexable(out.triangles.size()); // the closest-point tree indexes the triangles too
   out.points.shrink_to_fit();
   out.triangles.shrink_to_fit();
   return out;
