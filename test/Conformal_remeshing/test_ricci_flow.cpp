@@ -782,6 +782,39 @@ TEST(RicciFlow, CompactHistoryWalksTheSameWays)
     ASSERT_TRUE(same(t.to_input(p), compact.to_input(p)));
 }
 
+TEST(RicciFlow, CorrespondenceAloneWalksTheSameWays)
+{
+  // With its connectivity and lengths freed, a triangulation still walks every point back and
+  // forth bit for bit, through flips (a CAD sliver disc) and splits (a cube with an obtuse hole).
+  const auto same = [](const Tri::Face_location& p, const Tri::Face_location& q) {
+    return p.face == q.face && p.coordinates == q.coordinates;
+  };
+  for(const Soup& s : {cad_sliver_disc(20, 61, 0.4, 0.15), cube_with_obtuse_hole(4, 0.2)})
+  {
+    Tri t = from_soup(s);
+    ASSERT_TRUE(CR::discrete_ricci_flow(t, CR::disc_flattening_targets(t), CR::parameters::curvature_tolerance(1e-9)).converged);
+    ASSERT_GT(t.number_of_flips() + t.number_of_splits(), 10u);
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> U(0., 1.);
+    std::vector<Tri::Face_location> points;
+    for(int i = 0; i < 2000; ++i)
+    {
+      double a = U(rng), b = U(rng);
+      if(a + b > 1) { a = 1 - a; b = 1 - b; }
+      points.push_back({static_cast<int>(U(rng) * t.number_of_faces()) % t.number_of_faces(), {{1 - a - b, a, b}}});
+    }
+    Tri alone = t;
+    alone.keep_only_correspondence();
+    EXPECT_EQ(alone.number_of_faces(), 0);
+    EXPECT_EQ(alone.number_of_vertices(), 0);
+    for(const Tri::Face_location& p : points)
+    {
+      ASSERT_TRUE(same(t.to_input(p), alone.to_input(p)));
+      ASSERT_TRUE(same(t.from_input(t.to_input(p)), alone.from_input(alone.to_input(p))));
+    }
+  }
+}
+
 TEST(RicciFlow, BoundarySplitsKeepConvergenceAndCorrespondence)
 {
   // A cube with one grid cell removed, the faces along the hole made obtuse: a disc whose

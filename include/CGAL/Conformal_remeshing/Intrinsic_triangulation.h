@@ -772,6 +772,23 @@ public:
     std::vector<std::vector<int>>().swap(face_events_);
     history_is_compact_ = true;
   }
+
+  /// Keeps the correspondence record alone, compacted, and frees the connectivity and the edge
+  /// lengths: for a triangulation that, its flow over, is only walked back and forth (the
+  /// remesher holds one per patch through all its later stages, where the connectivity and
+  /// lengths are about a third of the triangulation's memory). Afterwards `to_input()` and
+  /// `from_input()` still answer as before; every other query sees a triangulation of no vertex,
+  /// face or edge, and a flip or split is not allowed.
+  void keep_only_correspondence()
+  {
+    compact_history();
+    nv_ = 0;
+    for(std::vector<int>* a : {&he_vertex_, &he_twin_, &he_edge_, &edge_he_})
+      std::vector<int>().swap(*a);
+    std::vector<FT>().swap(length_);
+    for(std::vector<char>* a : {&unflippable_, &vertex_on_border_, &queued_})
+      std::vector<char>().swap(*a);
+  }
   /// @}
 
 private:

@@ -75,7 +75,9 @@ inline std::vector<double> local_scale(const Conformal_flattening& flat)
 }
 
 /// A patch, its flattening, and the local scale of the flattening at the vertices of its flat
-/// triangulation (see `local_scale()`).
+/// triangulation (see `local_scale()`). The flattening's intrinsic triangulation keeps only its
+/// correspondence record (`Intrinsic_triangulation::keep_only_correspondence()`): the meshing
+/// reads the flat triangles and walks them back to the patch, nothing else of it.
 struct Flattened_patch
 {
   Extracted_patch patch;

@@ -132,6 +132,9 @@ void segment_and_flatten(const TriangleMesh& input, const Remeshing_options& opt
     patches[p].patch = std::move(flattened.patches[p]);
     patches[p].flattening = std::move(flattened.flattenings[p]);
     patches[p].scale = local_scale(patches[p].flattening);
+    // The meshing walks the flattening's triangles back to the patch and never reads the final
+    // triangulation's connectivity or lengths.
+    patches[p].flattening.triangulation.keep_only_correspondence();
   });
   result.patches.clear();
   for(Flattened_patch& patch : patches)
