@@ -462,9 +462,11 @@ private:
   void newton_direction(int nv)
   {
     const Clock::time_point t0 = Clock::now();
-    assemble_hessian();
     Matrix H(nv - 1, nv - 1);
-    H.setFromTriplets(triplets_.begin(), triplets_.end());
+    {
+      const std::vector<Eigen::Triplet<FT> > triplets = hessian_triplets(nv);
+      H.setFromTriplets(triplets.begin(), triplets.end());
+    } // the triplets are freed before the factorization
     Vector rhs(nv - 1);
     for(int v = 0; v < nv; ++v)
       if(v != gauge)
@@ -478,11 +480,23 @@ private:
         d_[v] = x[reduced(v)];
   }
 
-  // Hessian (cotangent matrix), assembled per face so that repeated vertices are handled.
-  void assemble_hessian()
+  // The Hessian (cotangent matrix) as triplets, assembled per face so that repeated vertices are
+  // handled. Eigen's setFromTriplets() sums the triplets of one entry in their order; the
+  // diagonal is summed here in that same order and given as one triplet per vertex, which halves
+  // the triplets (the largest transient of a flow on a large patch) and leaves the matrix as it
+  // would be with one triplet per corner and side.
+  std::vector<Eigen::Triplet<FT> > hessian_triplets(int nv) const
   {
-    triplets_.clear();
-    triplets_.reserve(12 * static_cast<std::size_t>(tri_.number_of_faces()));
+    std::vector<FT> diagonal(nv, FT(0));
+    std::vector<char> has_diagonal(nv, 0);
+    const auto add_to_diagonal = [&](int v, const FT& w) {
+      if(v == gauge)
+        return;
+      diagonal[v] = has_diagonal[v] ? diagonal[v] + w : w;
+      has_diagonal[v] = 1;
+    };
+    std::vector<Eigen::Triplet<FT> > triplets;
+    triplets.reserve(6 * static_cast<std::size_t>(tri_.number_of_faces()) + static_cast<std::size_t>(nv));
     for(int f = 0; f < tri_.number_of_faces(); ++f)
     {
       std::array<FT, 3> t;
@@ -495,15 +509,19 @@ private:
         if(a == b)
           continue;
         const FT w = cot_from_half_tangent(t[(c + 2) % 3]);
-        if(a != gauge) triplets_.emplace_back(reduced(a), reduced(a), w);
-        if(b != gauge) triplets_.emplace_back(reduced(b), reduced(b), w);
+        add_to_diagonal(a, w);
+        add_to_diagonal(b, w);
         if(a != gauge && b != gauge)
         {
-          triplets_.emplace_back(reduced(a), reduced(b), -w);
-          triplets_.emplace_back(reduced(b), reduced(a), -w);
+          triplets.emplace_back(reduced(a), reduced(b), -w);
+          triplets.emplace_back(reduced(b), reduced(a), -w);
         }
       }
     }
+    for(int v = 0; v < nv; ++v)
+      if(has_diagonal[v])
+        triplets.emplace_back(reduced(v), reduced(v), diagonal[v]);
+    return triplets;
   }
 
   // The solution of H x = rhs (H of size nv - 1). The factorization of an earlier Hessian of the
@@ -723,7 +741,6 @@ private:
   int analyzed_size_ = -1, factorized_size_ = -1;
   std::vector<FT> g_, g_trial_, d_, l_; // residual K - K̄, that of a trial, Newton direction, trial lengths
   std::vector<double> zero_, trial_u_;
-  std::vector<Eigen::Triplet<FT>> triplets_;
   FT error_;
   Conformal_path<FT> path_; // the line search with exact_conformal_path
 
