@@ -10,6 +10,7 @@
 #ifndef CGAL_CONFORMAL_REMESHING_INTERNAL_REMESHING_SURFACE_DISTANCE_H
 #define CGAL_CONFORMAL_REMESHING_INTERNAL_REMESHING_SURFACE_DISTANCE_H
 
+#include <CGAL/Conformal_remeshing/Error.h>
 #include <CGAL/Conformal_remeshing/internal/distance_to_surface.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/sizing.h>
 
@@ -129,13 +130,14 @@ typedef Distance_to_surface::Fast::Point_3 Fast_point;
 
 /// A triangle mesh's vertices, edges and triangles in double precision, by index: the edges and
 /// triangles give the indices of their vertices, and each triangle the edges from its corner `k`
-/// to corner `k + 1`.
+/// to corner `k + 1`. The indices take 32 bits (a third of the copy of a large input).
 struct Indexed_triangles
 {
+  typedef std::uint32_t Index;
   std::vector<Fast_point> points;
   std::vector<bool> used; ///< the vertices some face has
-  std::vector<std::array<std::size_t, 2> > edges;
-  std::vector<std::array<std::size_t, 3> > corners, sides;
+  std::vector<std::array<Index, 2> > edges;
+  std::vector<std::array<Index, 3> > corners, sides;
 };
 
 template <typename TriangleMesh>
@@ -150,6 +152,9 @@ Indexed_triangles indexed_triangles(const TriangleMesh& mesh)
     vertex_count = (std::max)(vertex_count, std::size_t(get(vim, v)) + 1);
   for(auto e : CGAL::edges(mesh))
     edge_count = (std::max)(edge_count, std::size_t(get(eim, e)) + 1);
+  typedef Indexed_triangles::Index Index;
+  if((std::max)({vertex_count, edge_count, std::size_t(num_faces(mesh))}) > std::size_t((std::numeric_limits<Index>::max)()))
+    throw Error(Error_code::INVALID_INPUT, "indexed_triangles: 2^32 vertices, edges or faces or more to index");
   result.points.resize(vertex_count);
   result.used.assign(vertex_count, false);
   result.edges.resize(edge_count);
@@ -159,15 +164,17 @@ Indexed_triangles indexed_triangles(const TriangleMesh& mesh)
     result.points[get(vim, v)] = Fast_point(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
   }
   for(auto e : CGAL::edges(mesh))
-    result.edges[get(eim, e)] = {{std::size_t(get(vim, source(e, mesh))), std::size_t(get(vim, target(e, mesh)))}};
+    result.edges[get(eim, e)] = {{Index(get(vim, source(e, mesh))), Index(get(vim, target(e, mesh)))}};
+  result.corners.reserve(num_faces(mesh));
+  result.sides.reserve(num_faces(mesh));
   for(auto f : CGAL::faces(mesh))
   {
-    std::array<std::size_t, 3> corners, sides;
+    std::array<Index, 3> corners, sides;
     auto h = halfedge(f, mesh);
     for(int k = 0; k < 3; ++k, h = next(h, mesh))
     {
-      corners[k] = std::size_t(get(vim, source(h, mesh)));
-      sides[k] = std::size_t(get(eim, edge(h, mesh)));
+      corners[k] = Index(get(vim, source(h, mesh)));
+      sides[k] = Index(get(eim, edge(h, mesh)));
       result.used[corners[k]] = true;
     }
     result.corners.push_back(corners);
@@ -181,13 +188,13 @@ Indexed_triangles indexed_triangles(const TriangleMesh& mesh)
 struct Distance_samples
 {
   std::vector<Fast_point> points;
-  std::vector<std::size_t> element;
+  std::vector<Indexed_triangles::Index> element;
   std::vector<double> squared;
 
   void add(const Fast_point& p, std::size_t e)
   {
     points.push_back(p);
-    element.push_back(e);
+    element.push_back(Indexed_triangles::Index(e));
   }
 
   template <typename ConcurrencyTag>
@@ -209,7 +216,7 @@ struct Distance_samples
 /// excepted.
 inline void add_triangle_samples(const Indexed_triangles& mesh, std::size_t t, double spacing, Distance_samples& samples)
 {
-  const std::array<std::size_t, 3>& c = mesh.corners[t];
+  const std::array<Indexed_triangles::Index, 3>& c = mesh.corners[t];
   const Fast_point &a = mesh.points[c[0]], &b = mesh.points[c[1]], &d = mesh.points[c[2]];
   const double longest = std::sqrt((std::max)((std::max)(CGAL::squared_distance(a, b), CGAL::squared_distance(b, d)),
                                               CGAL::squared_distance(d, a)));
@@ -280,7 +287,7 @@ Coarse_samples coarse_samples(const Indexed_triangles& mesh, const Distance_to_s
   }
   for(std::size_t t = 0; t < mesh.corners.size(); ++t)
   {
-    const std::array<std::size_t, 3>& c = mesh.corners[t];
+    const std::array<Indexed_triangles::Index, 3>& c = mesh.corners[t];
     const Fast_point g = CGAL::centroid(mesh.points[c[0]], mesh.points[c[1]], mesh.points[c[2]]);
     double bound = std::numeric_limits<double>::infinity();
     if(with_vertices_and_edges)
@@ -331,7 +338,7 @@ inline std::vector<bool> triangles_beyond(const Indexed_triangles& mesh, const M
 /// Whether triangle `t` of `mesh` is narrower than `spacing` (a CAD sliver).
 inline bool is_narrow(const Indexed_triangles& mesh, std::size_t t, double spacing)
 {
-  const std::array<std::size_t, 3>& c = mesh.corners[t];
+  const std::array<Indexed_triangles::Index, 3>& c = mesh.corners[t];
   const Fast_point &a = mesh.points[c[0]], &b = mesh.points[c[1]], &d = mesh.points[c[2]];
   const double longest = std::sqrt((std::max)((std::max)(CGAL::squared_distance(a, b), CGAL::squared_distance(b, d)),
                                               CGAL::squared_distance(d, a)));
