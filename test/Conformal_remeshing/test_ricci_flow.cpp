@@ -742,6 +742,30 @@ TEST(RicciFlow, CorrespondenceRoundTripAndOrientation)
   EXPECT_EQ(bad, 0);
 }
 
+namespace {
+
+// `n` points of `t`'s faces, uniformly random in face and barycentric coordinates.
+std::vector<Tri::Face_location> random_face_locations(const Tri& t, int n, unsigned seed)
+{
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> U(0., 1.);
+  std::vector<Tri::Face_location> points;
+  for(int i = 0; i < n; ++i)
+  {
+    double a = U(rng), b = U(rng);
+    if(a + b > 1) { a = 1 - a; b = 1 - b; }
+    points.push_back({static_cast<int>(U(rng) * t.number_of_faces()) % t.number_of_faces(), {{1 - a - b, a, b}}});
+  }
+  return points;
+}
+
+bool same_location(const Tri::Face_location& p, const Tri::Face_location& q)
+{
+  return p.face == q.face && p.coordinates == q.coordinates;
+}
+
+} // namespace
+
 TEST(RicciFlow, CompactHistoryWalksTheSameWays)
 {
   // The record in one array gives every walk, both ways, bit for bit; a flip after it is
@@ -752,22 +776,11 @@ TEST(RicciFlow, CompactHistoryWalksTheSameWays)
   ASSERT_GT(t.number_of_flips(), 100u);
   Tri compact = t;
   compact.compact_history();
-  std::mt19937 rng(5);
-  std::uniform_real_distribution<double> U(0., 1.);
-  std::vector<Tri::Face_location> points;
-  for(int i = 0; i < 2000; ++i)
-  {
-    double a = U(rng), b = U(rng);
-    if(a + b > 1) { a = 1 - a; b = 1 - b; }
-    points.push_back({static_cast<int>(U(rng) * t.number_of_faces()) % t.number_of_faces(), {{1 - a - b, a, b}}});
-  }
-  const auto same = [](const Tri::Face_location& p, const Tri::Face_location& q) {
-    return p.face == q.face && p.coordinates == q.coordinates;
-  };
+  const std::vector<Tri::Face_location> points = random_face_locations(t, 2000, 5);
   for(const Tri::Face_location& p : points)
   {
-    ASSERT_TRUE(same(t.to_input(p), compact.to_input(p)));
-    ASSERT_TRUE(same(t.from_input(t.to_input(p)), compact.from_input(compact.to_input(p))));
+    ASSERT_TRUE(same_location(t.to_input(p), compact.to_input(p)));
+    ASSERT_TRUE(same_location(t.from_input(t.to_input(p)), compact.from_input(compact.to_input(p))));
   }
   // One more flip on both (an interior edge whose quad is convex, flipped however it stands).
   int flipped = 0;
@@ -779,38 +792,27 @@ TEST(RicciFlow, CompactHistoryWalksTheSameWays)
     }
   ASSERT_EQ(flipped, 1);
   for(const Tri::Face_location& p : points)
-    ASSERT_TRUE(same(t.to_input(p), compact.to_input(p)));
+    ASSERT_TRUE(same_location(t.to_input(p), compact.to_input(p)));
 }
 
 TEST(RicciFlow, CorrespondenceAloneWalksTheSameWays)
 {
   // With its connectivity and lengths freed, a triangulation still walks every point back and
   // forth bit for bit, through flips (a CAD sliver disc) and splits (a cube with an obtuse hole).
-  const auto same = [](const Tri::Face_location& p, const Tri::Face_location& q) {
-    return p.face == q.face && p.coordinates == q.coordinates;
-  };
   for(const Soup& s : {cad_sliver_disc(20, 61, 0.4, 0.15), cube_with_obtuse_hole(4, 0.2)})
   {
     Tri t = from_soup(s);
     ASSERT_TRUE(CR::discrete_ricci_flow(t, CR::disc_flattening_targets(t), CR::parameters::curvature_tolerance(1e-9)).converged);
     ASSERT_GT(t.number_of_flips() + t.number_of_splits(), 10u);
-    std::mt19937 rng(7);
-    std::uniform_real_distribution<double> U(0., 1.);
-    std::vector<Tri::Face_location> points;
-    for(int i = 0; i < 2000; ++i)
-    {
-      double a = U(rng), b = U(rng);
-      if(a + b > 1) { a = 1 - a; b = 1 - b; }
-      points.push_back({static_cast<int>(U(rng) * t.number_of_faces()) % t.number_of_faces(), {{1 - a - b, a, b}}});
-    }
+    const std::vector<Tri::Face_location> points = random_face_locations(t, 2000, 7);
     Tri alone = t;
     alone.keep_only_correspondence();
     EXPECT_EQ(alone.number_of_faces(), 0);
     EXPECT_EQ(alone.number_of_vertices(), 0);
     for(const Tri::Face_location& p : points)
     {
-      ASSERT_TRUE(same(t.to_input(p), alone.to_input(p)));
-      ASSERT_TRUE(same(t.from_input(t.to_input(p)), alone.from_input(alone.to_input(p))));
+      ASSERT_TRUE(same_location(t.to_input(p), alone.to_input(p)));
+      ASSERT_TRUE(same_location(t.from_input(t.to_input(p)), alone.from_input(alone.to_input(p))));
     }
   }
 }
