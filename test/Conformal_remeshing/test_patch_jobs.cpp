@@ -260,3 +260,40 @@ TEST(PatchJobs, RemeshingWithJobsRunThroughBytesGivesTheSameOutput)
   EXPECT_GT(here.number_of_vertices(), 1000u);
   EXPECT_EQ(off_text(through_bytes), off_text(here));
 }
+
+TEST(PatchJobs, AFlattenedPatchKeepsItsTipsAndMapsNotItsMesh)
+{
+  // An open cone of 16 facets (a disc, flattened whole): its apex, a vertex the output would cut,
+  // is kept as a tip of the patch. The meshing reads the tips; the patch's mesh is freed once
+  // flattened.
+  Mesh cone;
+  const CGAL::Epick::Point_3 apex(0, 0, 0.5);
+  const auto top = cone.add_vertex(apex);
+  std::vector<Mesh::Vertex_index> rim;
+  for(int i = 0; i < 16; ++i)
+    rim.push_back(cone.add_vertex(CGAL::Epick::Point_3(std::cos(i * CGAL_PI / 8.), std::sin(i * CGAL_PI / 8.), 0)));
+  for(int i = 0; i < 16; ++i)
+    cone.add_face(top, rim[i], rim[(i + 1) % 16]);
+  ASSERT_TRUE(CGAL::is_valid_polygon_mesh(cone));
+  const auto np = CGAL::parameters::default_values();
+  const RM::Remeshing_options options = RM::remeshing_options(cone, np);
+  CR::Remeshing_report report;
+  CR::Remeshing_statistics statistics;
+  RM::Flattened_surface surface;
+  RM::segment_and_flatten<CGAL::Sequential_tag>(cone, options, np, CR::internal::Time_limit::from(np, "test"),
+                                                [](const std::string&) {}, report, statistics, surface);
+  std::size_t apexes = 0;
+  for(const auto& patch : surface.patches)
+  {
+    EXPECT_EQ(patch->patch.mesh.number_of_vertices(), 0u);
+    EXPECT_FALSE(patch->patch.segmented_face.empty());
+    for(const RM::Tip_candidate& tip : patch->tips)
+    {
+      EXPECT_EQ(surface.segmentation.mesh.point(patch->patch.segmented_vertex.at(tip.vertex)), tip.point);
+      apexes += tip.point == apex;
+    }
+    for(std::size_t i = 1; i < patch->tips.size(); ++i)
+      EXPECT_GE(patch->tips[i - 1].cut, patch->tips[i].cut); // the highest first
+  }
+  EXPECT_EQ(apexes, 1u) << surface.patches.size() << " patches, " << report.plane_cuts << " plane cuts";
+}

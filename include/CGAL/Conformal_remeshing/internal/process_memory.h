@@ -2,13 +2,17 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 //
 // The process's peak resident memory so far, which the statistics record at the end of each
-// stage of `remesh_conformal()`, so that the stage that raises it shows.
+// stage of `remesh_conformal()`, so that the stage that raises it shows; and the release of the
+// heap's free pages after a stage that frees large structures.
 
 #ifndef CGAL_CONFORMAL_REMESHING_INTERNAL_PROCESS_MEMORY_H
 #define CGAL_CONFORMAL_REMESHING_INTERNAL_PROCESS_MEMORY_H
 
 #if defined(__unix__) || defined(__APPLE__)
 #include <sys/resource.h>
+#endif
+#if defined(__GLIBC__)
+#include <malloc.h>
 #endif
 
 namespace CGAL {
@@ -29,6 +33,17 @@ inline double peak_resident_megabytes()
 #endif
 #else
   return -1.;
+#endif
+}
+
+/// Gives the heap's free pages back to the operating system where the C library can (glibc's
+/// `malloc_trim()`). Freed arrays amid the heap otherwise stay resident, and the next stage's
+/// large arrays, mapped afresh rather than placed in those holes, add to them. Nothing changes
+/// but the resident memory.
+inline void release_free_memory()
+{
+#if defined(__GLIBC__)
+  malloc_trim(0);
 #endif
 }
 

@@ -9,6 +9,7 @@
 
 #include <CGAL/Conformal_remeshing/conformal_flatten.h>
 #include <CGAL/Conformal_remeshing/segment_into_poly_annuli.h>
+#include <CGAL/Conformal_remeshing/internal/remeshing/kept_input_vertices.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
@@ -74,15 +75,18 @@ inline std::vector<double> local_scale(const Conformal_flattening& flat)
   return scale;
 }
 
-/// A patch, its flattening, and the local scale of the flattening at the vertices of its flat
-/// triangulation (see `local_scale()`). The flattening's intrinsic triangulation keeps only its
-/// correspondence record (`Intrinsic_triangulation::keep_only_correspondence()`): the meshing
-/// reads the flat triangles and walks them back to the patch, nothing else of it.
+/// A patch, its flattening, the local scale of the flattening at the vertices of its flat
+/// triangulation (see `local_scale()`), and the patch's vertices that the output would cut (see
+/// `tip_candidates()`). What the meshing does not read is freed once the patch is flattened: the
+/// patch's mesh (its maps to the segmentation stay), and all of the flattening's intrinsic
+/// triangulation but its correspondence record
+/// (`Intrinsic_triangulation::keep_only_correspondence()`).
 struct Flattened_patch
 {
   Extracted_patch patch;
   Conformal_flattening flattening;
   std::vector<double> scale;
+  std::vector<Tip_candidate> tips;
 };
 
 } // namespace remeshing

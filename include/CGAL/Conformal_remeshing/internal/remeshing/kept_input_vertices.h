@@ -16,7 +16,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <functional>
 #include <map>
 #include <utility>
 #include <vector>
@@ -26,7 +25,16 @@ namespace Conformal_remeshing {
 namespace internal {
 namespace remeshing {
 
-/// The vertices of `patch` (indices in `patch.mesh`) off its border that are tips the output
+/// A vertex of a patch that the output would cut: its index in the patch's mesh, its point, and
+/// how far the output would cut it.
+struct Tip_candidate
+{
+  double cut;
+  std::size_t vertex;
+  Epick::Point_3 point;
+};
+
+/// The vertices of the patch mesh `m` off its border that are tips the output
 /// would cut by more than `tolerance` times the target length `h`: vertices whose height over the
 /// centroid of their ring, along the ring's normal, scaled to the distance at which the nearest
 /// output vertices are expected (0.6 `h`, or the ring's mean radius if shorter), exceeds the
@@ -40,15 +48,13 @@ namespace remeshing {
 ///   output; keeping them brings its distance to the input below isotropic_remeshing's). The
 ///   radius bound keeps the vertices of finer parts' creases and ridges out: kept, they would
 ///   pin the optimization (more skewed triangles, a larger distance to the input).
-/// Taken greedily from the highest, each at least `h` from the others and from every point of
-/// `avoid` (the patch's boundary samples), so that the refinement meets no short distance it
-/// cannot grade.
-inline std::vector<std::size_t> kept_input_vertices(const Extracted_patch& patch, double h, double tolerance,
-                                                    const std::vector<Epick::Point_3>& avoid)
+/// Highest first (by `cut`, then by vertex index, both decreasing). The meshing takes some of them
+/// (`kept_tips()`); they are found once per patch, when it is flattened, so that the patch's mesh
+/// need not be kept for the meshing.
+inline std::vector<Tip_candidate> tip_candidates(const Extracted_patch::Mesh& m, double h, double tolerance)
 {
   typedef Extracted_patch::Mesh Mesh;
-  const Mesh& m = patch.mesh;
-  std::vector<std::pair<double, std::size_t> > candidates; // (height of the cut tip, vertex)
+  std::vector<Tip_candidate> candidates;
   std::vector<Epick::Point_3> ring;
   for(Mesh::Vertex_index v : m.vertices())
   {
@@ -89,9 +95,20 @@ inline std::vector<std::size_t> kept_input_vertices(const Extracted_patch& patch
       if(!sharp)
         continue;
     }
-    candidates.emplace_back(cut, std::size_t(v));
+    candidates.push_back(Tip_candidate{cut, std::size_t(v), p});
   }
-  std::sort(candidates.begin(), candidates.end(), std::greater<std::pair<double, std::size_t> >());
+  std::sort(candidates.begin(), candidates.end(), [](const Tip_candidate& a, const Tip_candidate& b) {
+    return std::make_pair(a.cut, a.vertex) > std::make_pair(b.cut, b.vertex);
+  });
+  return candidates;
+}
+
+/// Of `candidates` (see `tip_candidates()`, for the same `h`), those taken greedily from the
+/// highest, each at least `h` from the others and from every point of `avoid` (the patch's
+/// boundary samples), so that the refinement meets no short distance it cannot grade.
+inline std::vector<Tip_candidate> kept_tips(const std::vector<Tip_candidate>& candidates, double h,
+                                            const std::vector<Epick::Point_3>& avoid)
+{
   // The points taken so far in a grid of cells of size h: a new one looks at 27 cells.
   std::map<std::array<long, 3>, std::vector<Epick::Point_3> > grid;
   auto cell = [&](const Epick::Point_3& p) {
@@ -113,17 +130,28 @@ inline std::vector<std::size_t> kept_input_vertices(const Extracted_patch& patch
   };
   for(const Epick::Point_3& q : avoid)
     grid[cell(q)].push_back(q);
-  std::vector<std::size_t> kept;
-  for(const auto& c : candidates)
+  std::vector<Tip_candidate> kept;
+  for(const Tip_candidate& c : candidates)
   {
-    const Epick::Point_3& p = m.point(Mesh::Vertex_index(Mesh::size_type(c.second)));
-    if(is_near_a_taken_point(p))
+    if(is_near_a_taken_point(c.point))
       continue;
-    kept.push_back(c.second);
-    grid[cell(p)].push_back(p);
+    kept.push_back(c);
+    grid[cell(c.point)].push_back(c.point);
   }
   return kept;
 }
+
+/// The vertices of `patch` (indices in `patch.mesh`) that `kept_tips()` takes of its
+/// `tip_candidates()`.
+inline std::vector<std::size_t> kept_input_vertices(const Extracted_patch& patch, double h, double tolerance,
+                                                    const std::vector<Epick::Point_3>& avoid)
+{
+  std::vector<std::size_t> kept;
+  for(const Tip_candidate& tip : kept_tips(tip_candidates(patch.mesh, h, tolerance), h, avoid))
+    kept.push_back(tip.vertex);
+  return kept;
+}
+
 
 } // namespace remeshing
 } // namespace internal

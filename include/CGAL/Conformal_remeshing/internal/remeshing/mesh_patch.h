@@ -237,14 +237,13 @@ inline std::vector<std::pair<std::size_t, std::size_t> > local_diagonals_to_spli
 inline Planar_mesh mesh_patch_in_plane(const Patch_job& job, const Planar_size_field& planar_size, Surface_map_with_hints& surface_map)
 {
   const Conformal_flattening& flat = job.surface->flattening;
-  const Extracted_patch& patch = job.surface->patch;
   const Patch_boundary& boundary = job.boundary;
   std::vector<Epick::Point_2> fixed_points;
   std::vector<std::pair<Epick::Point_2, Epick::Point_3> > tips;
-  for(std::size_t v : kept_input_vertices(patch, job.size.target(), kept_tip_tolerance, boundary.sample_points))
+  for(const Tip_candidate& tip : kept_tips(job.surface->tips, job.size.target(), boundary.sample_points))
   {
-    fixed_points.push_back(flat.uv[v]);
-    tips.emplace_back(flat.uv[v], patch.mesh.point(Extracted_patch::Mesh::Vertex_index(Extracted_patch::Mesh::size_type(v))));
+    fixed_points.push_back(flat.uv[tip.vertex]);
+    tips.emplace_back(flat.uv[tip.vertex], tip.point);
   }
   const auto on_kept_curve = [&](const Boundary_sample& a, const Boundary_sample& b) { return boundary.is_kept_chord(a.id, b.id); };
   const auto surface_point = [&](const Epick::Point_2& p, Epick::Point_3& x) {

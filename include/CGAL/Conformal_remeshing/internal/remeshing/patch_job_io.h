@@ -87,6 +87,7 @@ template <> struct Is_plain_value<Epick::Point_2> : std::true_type {};
 template <> struct Is_plain_value<Epick::Point_3> : std::true_type {};
 template <> struct Is_plain_value<Boundary_sample> : std::true_type {};
 template <> struct Is_plain_value<Domain_point> : std::true_type {};
+template <> struct Is_plain_value<Tip_candidate> : std::true_type {};
 template <> struct Is_plain_value<Planar_embedding_report> : std::true_type {};
 template <> struct Is_plain_value<Planar_smoothing> : std::true_type {};
 template <> struct Is_plain_value<Frontal_insertion> : std::true_type {};
@@ -397,6 +398,7 @@ void transfer(Archive& a, Flattened_patch& p)
   transfer(a, p.patch.genus);
   transfer(a, p.flattening);
   transfer(a, p.scale);
+  transfer(a, p.tips);
 }
 
 template <typename Archive>

@@ -18,6 +18,7 @@
 #include <CGAL/Conformal_remeshing/internal/time_limit.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/flattened_patch.h>
 #include <CGAL/Conformal_remeshing/internal/remeshing/remeshing_options.h>
+#include <CGAL/Conformal_remeshing/internal/remeshing/tuning.h>
 
 #include <algorithm>
 #include <chrono>
@@ -132,13 +133,16 @@ void segment_and_flatten(const TriangleMesh& input, const Remeshing_options& opt
     patches[p].patch = std::move(flattened.patches[p]);
     patches[p].flattening = std::move(flattened.flattenings[p]);
     patches[p].scale = local_scale(patches[p].flattening);
-    // The meshing walks the flattening's triangles back to the patch and never reads the final
-    // triangulation's connectivity or lengths.
+    patches[p].tips = tip_candidates(patches[p].patch.mesh, h, kept_tip_tolerance);
+    // The meshing reads the tips, not the patch's mesh, and walks the flattening's triangles back
+    // to the patch without the final triangulation's connectivity or lengths.
+    patches[p].patch.mesh = Extracted_patch::Mesh();
     patches[p].flattening.triangulation.keep_only_correspondence();
   });
   result.patches.clear();
   for(Flattened_patch& patch : patches)
     result.patches.push_back(std::make_shared<const Flattened_patch>(std::move(patch)));
+  release_free_memory(); // the patches' meshes and the flows' triangulations, held until here
 }
 
 } // namespace remeshing
