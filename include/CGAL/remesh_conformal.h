@@ -163,7 +163,7 @@ namespace Conformal_remeshing {
 ///     \cgalParamDefault{not written}
 ///   \cgalParamNEnd
 ///   \cgalParamNBegin{flattened_patch_visitor}
-///     \cgalParamDescription{called with every patch that the meshing stage meshes (after the bisections, and without the sharp features when the `features_fallback` dropped them) and its flattening, in patch order, once they are all flattened and before any is meshed: how to look at the patches and their planar domains (the tool's `--save-patches` writes them). A batch of components (`batch_faces`) shows its own patches; batches whose outputs cross each other and are remeshed together show theirs again}
+///     \cgalParamDescription{called with every patch that the meshing stage meshes (after the bisections, and without the sharp features when the `features_fallback` dropped them) and its flattening, in patch order, once they are all flattened and before any is meshed: how to look at the patches and their planar domains (the tool's `--save-patches` writes them). A batch of components (`batch_faces`) shows its own patches; batches whose outputs cross each other and are remeshed together show theirs again. With a visitor the flattening stage holds every patch whole until the last one is flattened; without one (an empty `std::function` is none) it keeps of each patch, as soon as it is flattened, only what the meshing reads}
 ///     \cgalParamType{a callable `void(const Extracted_patch&, const Conformal_flattening&)`}
 ///     \cgalParamDefault{none}
 ///   \cgalParamNEnd

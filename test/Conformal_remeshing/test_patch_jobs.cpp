@@ -297,3 +297,52 @@ TEST(PatchJobs, AFlattenedPatchKeepsItsTipsAndMapsNotItsMesh)
   }
   EXPECT_EQ(apexes, 1u) << surface.patches.size() << " patches, " << report.plane_cuts << " plane cuts";
 }
+
+// Without a visitor, each patch is compacted as soon as it is flattened, and what a round of
+// bisections kept is dropped when the next round flattens the patches anew; with a visitor, all
+// are compacted once flattened. The patches are the same either way.
+TEST(PatchJobs, PatchesCompactedAsTheyAreFlattenedAreThoseCompactedAtTheEnd)
+{
+  Mesh cap;
+  bm::make_spherical_cap(cap, 120., 8, 24);
+  const auto flattened = [&](const auto& np, RM::Flattened_surface& surface, CR::Remeshing_report& report,
+                             CR::Remeshing_statistics& statistics) {
+    RM::segment_and_flatten<CGAL::Sequential_tag>(cap, RM::remeshing_options(cap, np), np, CR::internal::Time_limit::from(np, "test"),
+                                                  [](const std::string&) {}, report, statistics, surface);
+  };
+  RM::Flattened_surface reference, whole, compacted;
+  CR::Remeshing_report reference_report, report, visited_report;
+  CR::Remeshing_statistics reference_statistics, statistics, visited_statistics;
+  flattened(CGAL::parameters::default_values(), reference, reference_report, reference_statistics);
+  // A scale ratio below the cap's bisects it: more than one round.
+  const double ratio = 0.8 * reference_statistics.max_scale_ratio;
+  ASSERT_GT(ratio, 1.);
+  std::size_t visits = 0;
+  flattened(CR::parameters::maximum_scale_ratio(ratio), compacted, report, statistics);
+  flattened(CR::parameters::flattened_patch_visitor(
+              [&](const CR::Extracted_patch& patch, const CR::Conformal_flattening&) {
+                ++visits;
+                EXPECT_GT(patch.mesh.number_of_faces(), 0u); // whole when visited
+              },
+              CR::parameters::maximum_scale_ratio(ratio)),
+            whole, visited_report, visited_statistics);
+  EXPECT_GT(report.patch_bisections, 0u);
+  EXPECT_EQ(report.patch_bisections, visited_report.patch_bisections);
+  ASSERT_EQ(compacted.patches.size(), whole.patches.size());
+  EXPECT_EQ(visits, whole.patches.size());
+  EXPECT_EQ(statistics.patches.size(), compacted.patches.size()); // the reports of the last round's patches
+  for(std::size_t p = 0; p < whole.patches.size(); ++p)
+  {
+    const RM::Flattened_patch &a = *compacted.patches[p], &b = *whole.patches[p];
+    EXPECT_EQ(a.patch.mesh.number_of_vertices(), 0u);
+    EXPECT_EQ(b.patch.mesh.number_of_vertices(), 0u);
+    EXPECT_EQ(a.patch.segmented_face, b.patch.segmented_face);
+    EXPECT_EQ(a.flattening.uv, b.flattening.uv);
+    EXPECT_EQ(a.flattening.triangles, b.flattening.triangles);
+    EXPECT_EQ(a.scale, b.scale);
+    EXPECT_EQ(a.tip_length, b.tip_length);
+    ASSERT_EQ(a.tips.size(), b.tips.size());
+    for(std::size_t i = 0; i < a.tips.size(); ++i)
+      EXPECT_TRUE(a.tips[i].vertex == b.tips[i].vertex && a.tips[i].point == b.tips[i].point && a.tips[i].cut == b.tips[i].cut);
+  }
+}

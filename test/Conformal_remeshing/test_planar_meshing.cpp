@@ -92,7 +92,13 @@ TEST(KeptInputVertices, TheTipOfASharpConeOrACoarseDomeNotACreaseAFlatVertexOrAT
     return patch;
   };
   const double h = 0.5;
-  auto kept = [&](const CR::Extracted_patch& patch) { return RM::kept_input_vertices(patch, h, RM::kept_tip_tolerance, {}); };
+  // The vertices that the meshing keeps of a patch's tip candidates, away from `avoid`.
+  auto kept = [&](const CR::Extracted_patch& patch, const std::vector<CGAL::Epick::Point_3>& avoid = {}) {
+    std::vector<std::size_t> vertices;
+    for(const RM::Tip_candidate& tip : RM::kept_tips(RM::tip_candidates(patch.mesh, h, RM::kept_tip_tolerance), h, avoid))
+      vertices.push_back(tip.vertex);
+    return vertices;
+  };
   // A cone of height 0.5 over the unit disc: its tip (angle deficit 0.7 radian) is kept.
   EXPECT_EQ(kept(fan(1., [](double x, double y) { return 0.5 * (1. - std::sqrt(x * x + y * y)); })), (std::vector<std::size_t>{0}));
   // A coarse fan on a sphere of radius 10 (ring radius 3 h, angle deficit 0.03 radian): its
@@ -108,7 +114,7 @@ TEST(KeptInputVertices, TheTipOfASharpConeOrACoarseDomeNotACreaseAFlatVertexOrAT
   EXPECT_TRUE(kept(fan(0.01, [](double x, double y) { return 0.005 - 0.5 * std::sqrt(x * x + y * y); })).empty());
   // Nor is a tip closer than h to a point to avoid (a boundary sample).
   const CR::Extracted_patch cone = fan(1., [](double x, double y) { return 0.5 * (1. - std::sqrt(x * x + y * y)); });
-  EXPECT_TRUE(RM::kept_input_vertices(cone, h, RM::kept_tip_tolerance, {CGAL::Epick::Point_3(0.3, 0, 0.5)}).empty());
+  EXPECT_TRUE(kept(cone, {CGAL::Epick::Point_3(0.3, 0, 0.5)}).empty());
 }
 
 TEST(PlanarMesher, FixedPointsAreVerticesThatStayPut)

@@ -357,12 +357,13 @@ inline int run(int argc, char** argv, const CGAL::Conformal_remeshing::internal:
   try
   {
     progress("remeshing " + std::to_string(input.number_of_faces()) + " faces");
-    // --save-patches: the patches that the meshing stage meshes, numbered across batches.
+    // --save-patches: the patches that the meshing stage meshes, numbered across batches. Without
+    // it, no visitor (an empty function), so that the library keeps only what the meshing reads
+    // of each patch as soon as it is flattened.
     std::size_t saved_patches = 0;
-    const std::function<void(const CR::Extracted_patch&, const CR::Conformal_flattening&)> save_patch =
-      [&](const CR::Extracted_patch& patch, const CR::Conformal_flattening& flattening) {
-        if(o.save_patches.empty())
-          return;
+    std::function<void(const CR::Extracted_patch&, const CR::Conformal_flattening&)> save_patch;
+    if(!o.save_patches.empty())
+      save_patch = [&](const CR::Extracted_patch& patch, const CR::Conformal_flattening& flattening) {
         if(saved_patches == 0)
           progress("saving the patches to " + o.save_patches);
         const std::string name = o.save_patches + "/patch_" + std::to_string(saved_patches++);
@@ -441,6 +442,19 @@ inline int run(int argc, char** argv, const CGAL::Conformal_remeshing::internal:
           .field("planar_meshing_thread_seconds", statistics.seconds_planar_meshing)
           .field("optimization_thread_seconds", statistics.seconds_optimization)
           .field("pull_back_thread_seconds", statistics.seconds_pull_back);
+      // The flattening's steps summed over the patches (see Flattening_report), in thread seconds.
+      double welding = 0., refinement = 0., flow = 0., flips = 0., factorization = 0., solve = 0., line_search = 0.,
+             layout = 0., check = 0.;
+      for(const CR::Flattening_report& r : statistics.patches)
+      {
+        welding += r.seconds_welding, refinement += r.seconds_refinement, flow += r.seconds_flow;
+        flips += r.seconds_flips, factorization += r.seconds_factorization, solve += r.seconds_solve;
+        line_search += r.seconds_line_search, layout += r.seconds_layout, check += r.seconds_check;
+      }
+      json.key("flattening_step_thread_seconds").begin_object().field("welding", welding).field("refinement", refinement)
+          .field("flow", flow).field("flow_flips", flips).field("flow_factorization", factorization)
+          .field("flow_solve", solve).field("flow_line_search", line_search).field("layout", layout)
+          .field("embedding_check", check).end_object();
       json.key("meshing_phase_thread_seconds").begin_object();
       CR::Meshing_phase_seconds::for_each_phase(
         [&](const char* name, double CR::Meshing_phase_seconds::*phase) { json.field(name, statistics.meshing_phases.*phase); });

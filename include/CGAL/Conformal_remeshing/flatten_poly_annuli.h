@@ -20,6 +20,7 @@
 #include <CGAL/Polygon_mesh_processing/measure.h>
 #include <CGAL/tags.h>
 
+#include <cstddef>
 #include <functional>
 #include <iterator>
 #include <string>
@@ -66,10 +67,25 @@ inline double flow_edge_length(const Extracted_patch& patch, double longest)
   return (std::min)(longest, (std::max)(0.25 * longest, tube_resolution * shorter));
 }
 
-// `flatten_poly_annuli()` with the time limit and the name (for messages) of its caller.
+/// What `flatten_poly_annuli()` tells its caller as it goes, so that a caller keeping only part of
+/// each patch and flattening can drop the rest as soon as the patch is flattened, not once all
+/// of them are: a round of bisections flattens every patch anew, so what the caller kept of a
+/// round is void when the next one starts.
+struct Flattening_observer
+{
+  /// before a round flattens the patches, with their number
+  std::function<void(std::size_t number_of_patches)> round_started;
+  /// patch `p` of the round flattened within the limits, from the thread that flattened it; the
+  /// patch and its flattening may be moved from (the result then holds what is left of them)
+  std::function<void(std::size_t p, Extracted_patch& patch, Conformal_flattening& flattening)> patch_flattened;
+};
+
+// `flatten_poly_annuli()` with the time limit and the name (for messages) of its caller, which
+// `observer` follows.
 template <typename ConcurrencyTag, typename NamedParameters>
 void flatten_poly_annuli(Poly_annulus_segmentation& segmentation, Flattened_poly_annuli& result, const NamedParameters& np,
-                         const Time_limit& time_limit, const std::string& caller)
+                         const Time_limit& time_limit, const std::string& caller,
+                         const Flattening_observer& observer = Flattening_observer())
 {
   using CGAL::parameters::choose_parameter;
   using CGAL::parameters::get_parameter;
@@ -98,6 +114,8 @@ void flatten_poly_annuli(Poly_annulus_segmentation& segmentation, Flattened_poly
     result.patches.assign(n, Extracted_patch());
     result.flattenings.assign(n, Conformal_flattening());
     failures.assign(n, std::string());
+    if(observer.round_started)
+      observer.round_started(n);
     for_each_index<ConcurrencyTag>(n, [&](std::size_t p) {
       try
       {
@@ -115,6 +133,8 @@ void flatten_poly_annuli(Poly_annulus_segmentation& segmentation, Flattened_poly
           failures[p] = std::string(error_message(r.status)) + " (" + r.embedding.summary() + ")";
         else if(r.max_scale > maximum_scale_ratio * r.min_scale)
           failures[p] = "scale ratio " + std::to_string(r.max_scale / r.min_scale);
+        else if(observer.patch_flattened)
+          observer.patch_flattened(p, result.patches[p], result.flattenings[p]);
       }
       catch(const Error& e)
       {

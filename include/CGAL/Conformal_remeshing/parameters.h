@@ -92,7 +92,8 @@ CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(vertex_locations)
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(patch_job_runner)
 // `flattened_patch_visitor(f)`: `f`, a callable `void(const Extracted_patch&, const
 // Conformal_flattening&)`, is shown every patch that the meshing stage meshes, with its
-// flattening, once they are all flattened (what the tool's `--save-patches` writes).
+// flattening, once they are all flattened (what the tool's `--save-patches` writes); an empty
+// `std::function` is no visitor.
 CGAL_CONFORMAL_REMESHING_NAMED_PARAMETER(flattened_patch_visitor)
 // Output of `remesh_conformal()`: `Remeshing_statistics`, the timings and counters of its stages
 // (`std::ref(statistics)`).

@@ -87,6 +87,7 @@ struct Flattened_patch
   Conformal_flattening flattening;
   std::vector<double> scale;
   std::vector<Tip_candidate> tips;
+  double tip_length = 0.; ///< the target edge length `tips` were found for
 };
 
 } // namespace remeshing

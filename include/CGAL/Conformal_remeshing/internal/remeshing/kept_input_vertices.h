@@ -12,6 +12,7 @@
 #include <CGAL/Conformal_remeshing/segment_into_poly_annuli.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/assertions.h>
 
 #include <algorithm>
 #include <array>
@@ -109,6 +110,7 @@ inline std::vector<Tip_candidate> tip_candidates(const Extracted_patch::Mesh& m,
 inline std::vector<Tip_candidate> kept_tips(const std::vector<Tip_candidate>& candidates, double h,
                                             const std::vector<Epick::Point_3>& avoid)
 {
+  CGAL_precondition(h > 0.);
   // The points taken so far in a grid of cells of size h: a new one looks at 27 cells.
   std::map<std::array<long, 3>, std::vector<Epick::Point_3> > grid;
   auto cell = [&](const Epick::Point_3& p) {
@@ -140,18 +142,6 @@ inline std::vector<Tip_candidate> kept_tips(const std::vector<Tip_candidate>& ca
   }
   return kept;
 }
-
-/// The vertices of `patch` (indices in `patch.mesh`) that `kept_tips()` takes of its
-/// `tip_candidates()`.
-inline std::vector<std::size_t> kept_input_vertices(const Extracted_patch& patch, double h, double tolerance,
-                                                    const std::vector<Epick::Point_3>& avoid)
-{
-  std::vector<std::size_t> kept;
-  for(const Tip_candidate& tip : kept_tips(tip_candidates(patch.mesh, h, tolerance), h, avoid))
-    kept.push_back(tip.vertex);
-  return kept;
-}
-
 
 } // namespace remeshing
 } // namespace internal

@@ -240,7 +240,7 @@ inline Planar_mesh mesh_patch_in_plane(const Patch_job& job, const Planar_size_f
   const Patch_boundary& boundary = job.boundary;
   std::vector<Epick::Point_2> fixed_points;
   std::vector<std::pair<Epick::Point_2, Epick::Point_3> > tips;
-  for(const Tip_candidate& tip : kept_tips(job.surface->tips, job.size.target(), boundary.sample_points))
+  for(const Tip_candidate& tip : kept_tips(job.surface->tips, job.surface->tip_length, boundary.sample_points))
   {
     fixed_points.push_back(flat.uv[tip.vertex]);
     tips.emplace_back(flat.uv[tip.vertex], tip.point);

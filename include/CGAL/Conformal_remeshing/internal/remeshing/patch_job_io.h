@@ -4,7 +4,7 @@
 // Patch jobs and their results as bytes, so that another process can run a job (the MPI tool,
 // remesh_conformal_mpi): `mesh_patch()` on a job read back from its bytes gives the result it
 // gives on the original, bit for bit, because every number is copied as it is in memory and
-// every container keeps its order (a Surface_mesh keeps its halfedge numbering). The bytes are
+// every container keeps its order. The bytes are
 // those of this machine's layout: writer and reader must be the same build on the same kind of
 // machine, as the ranks of one MPI run are. A job with a user sizing field (a function) cannot be
 // written.
@@ -219,60 +219,6 @@ void transfer(Archive& a, std::unordered_map<K, V>& m)
 /// The members of the package's types that a job holds, private ones included.
 struct Patch_job_serialization
 {
-  // A Surface_mesh with its element numbering: points, and per halfedge its target, next and
-  // face, per vertex and face one of its halfedges. It must have no removed elements.
-  template <typename Archive>
-  static void transfer_mesh(Archive& a, Extracted_patch::Mesh& m)
-  {
-    typedef Extracted_patch::Mesh Mesh;
-    if(!Archive::reading && m.has_garbage())
-      throw Error(Error_code::INVALID_INPUT, "write_patch_job: the patch mesh has removed elements");
-    std::uint64_t sizes[3] = {m.number_of_vertices(), m.number_of_halfedges(), m.number_of_faces()};
-    a.raw(sizes, 3);
-    if(Archive::reading)
-    {
-      m.clear();
-      if(sizes[1] % 2 != 0 || sizes[0] > remaining_bound(a) || sizes[1] > remaining_bound(a) || sizes[2] > remaining_bound(a))
-        throw Error(Error_code::INVALID_INPUT, "read_patch_job: bad mesh sizes");
-      m.reserve(Mesh::size_type(sizes[0]), Mesh::size_type(sizes[1] / 2), Mesh::size_type(sizes[2]));
-      for(std::uint64_t v = 0; v < sizes[0]; ++v)
-        m.add_vertex();
-      for(std::uint64_t e = 0; e < sizes[1] / 2; ++e)
-        m.add_edge();
-      for(std::uint64_t f = 0; f < sizes[2]; ++f)
-        m.add_face();
-    }
-    const auto index = [](auto d) { return std::uint32_t(d.idx()); };
-    for(typename Mesh::Vertex_index v : m.vertices())
-    {
-      transfer(a, m.point(v));
-      std::uint32_t h = index(m.halfedge(v));
-      a.raw(&h, 1);
-      if(Archive::reading)
-        m.set_halfedge(v, typename Mesh::Halfedge_index(h));
-    }
-    for(typename Mesh::Halfedge_index h : m.halfedges())
-    {
-      std::uint32_t t[3] = {index(m.target(h)), index(m.next(h)), index(m.face(h))};
-      a.raw(t, 3);
-      if(Archive::reading)
-      {
-        if(t[0] >= sizes[0] || t[1] >= sizes[1] || (t[2] >= sizes[2] && t[2] != std::uint32_t(Mesh::null_face().idx())))
-          throw Error(Error_code::INVALID_INPUT, "read_patch_job: a halfedge refers to a missing element");
-        m.set_target(h, typename Mesh::Vertex_index(t[0]));
-        m.set_next(h, typename Mesh::Halfedge_index(t[1]));
-        m.set_face(h, typename Mesh::Face_index(t[2]));
-      }
-    }
-    for(typename Mesh::Face_index f : m.faces())
-    {
-      std::uint32_t h = index(m.halfedge(f));
-      a.raw(&h, 1);
-      if(Archive::reading)
-        m.set_halfedge(f, typename Mesh::Halfedge_index(h));
-    }
-  }
-
   template <typename Archive>
   static void transfer_triangulation(Archive& a, Intrinsic_triangulation<double>& t)
   {
@@ -391,7 +337,7 @@ void transfer(Archive& a, Conformal_flattening& f)
 template <typename Archive>
 void transfer(Archive& a, Flattened_patch& p)
 {
-  Patch_job_serialization::transfer_mesh(a, p.patch.mesh);
+  // Not the patch's mesh: it is freed once the patch is flattened (see `Flattened_patch`).
   transfer(a, p.patch.segmented_vertex);
   transfer(a, p.patch.segmented_face);
   transfer(a, p.patch.boundary_loops);
@@ -399,6 +345,7 @@ void transfer(Archive& a, Flattened_patch& p)
   transfer(a, p.flattening);
   transfer(a, p.scale);
   transfer(a, p.tips);
+  transfer(a, p.tip_length);
 }
 
 template <typename Archive>

@@ -22,6 +22,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
 #include <memory>
 #include <string>
 #include <utility>
@@ -46,18 +47,19 @@ inline std::string without_caller(const std::string& message)
   return message.compare(0, caller.size(), caller) == 0 ? message.substr(caller.size()) : message;
 }
 
-inline void add_flattening_statistics(const Poly_annulus_segmentation& segmentation, const Flattened_poly_annuli& flattened,
-                                      Remeshing_report& report, Remeshing_statistics& statistics)
+inline void add_flattening_statistics(const Poly_annulus_segmentation& segmentation, std::size_t bisections,
+                                      const std::vector<Flattened_patch>& patches, Remeshing_report& report,
+                                      Remeshing_statistics& statistics)
 {
-  report.patch_bisections = flattened.bisections;
-  report.number_of_patches = flattened.patches.size();
+  report.patch_bisections = bisections;
+  report.number_of_patches = patches.size();
   report.plane_cuts = segmentation.plane_cuts;
   report.feature_edges = segmentation.feature_edges;
   report.dangling_feature_edges = segmentation.dangling_feature_edges;
   report.narrow_strip_feature_edges = segmentation.narrow_strip_feature_edges;
-  for(const Conformal_flattening& flat : flattened.flattenings)
+  for(const Flattened_patch& patch : patches)
   {
-    const Flattening_report& r = flat.report;
+    const Flattening_report& r = patch.flattening.report;
     statistics.max_newton_iterations = (std::max)(statistics.max_newton_iterations, r.iterations);
     statistics.max_curvature_error = (std::max)(statistics.max_curvature_error, r.curvature_error);
     statistics.flips += r.flips;
@@ -68,13 +70,42 @@ inline void add_flattening_statistics(const Poly_annulus_segmentation& segmentat
   }
 }
 
+// Whether a callable was given: an empty `std::function` is none.
+template <typename Callable>
+bool is_given(const Callable&)
+{
+  return true;
+}
+template <typename Signature>
+bool is_given(const std::function<Signature>& f)
+{
+  return bool(f);
+}
+
+/// `patch` and its `flattening` (moved from) reduced to what the meshing reads, for the target
+/// edge length `h`: the meshing reads the tips, not the patch's mesh, and walks the flattening's
+/// triangles back to the patch without the final triangulation's connectivity or lengths.
+inline Flattened_patch compacted(Extracted_patch& patch, Conformal_flattening& flattening, double h)
+{
+  Flattened_patch result;
+  result.scale = local_scale(flattening);
+  result.tips = tip_candidates(patch.mesh, h, kept_tip_tolerance);
+  result.tip_length = h;
+  result.patch = std::move(patch);
+  result.patch.mesh = Extracted_patch::Mesh();
+  result.flattening = std::move(flattening);
+  result.flattening.triangulation.keep_only_correspondence();
+  return result;
+}
+
 /// Segments `input` and flattens its patches into `result` (an output parameter: a segmentation
 /// is not copied). The segmentation takes its parameters from `np`;
 /// the flow resolves the map at twice the target edge length unless `np` says otherwise (finer on
 /// tubes: see `flow_edge_length()`), and snaps to cutting planes within a tenth of it.
 ///
 /// The `flattened_patch_visitor` of `np`, if any, is shown each final patch and its flattening,
-/// in patch order.
+/// in patch order; then the patches are held whole until all are flattened. Without a visitor,
+/// each patch is compacted (see `Flattened_patch`) as soon as it is flattened.
 ///
 /// When a patch cannot be flattened even after bisection and the segmentation has sharp features,
 /// the surface is segmented again without them if `options.features_fallback` is on: features
@@ -93,6 +124,20 @@ void segment_and_flatten(const TriangleMesh& input, const Remeshing_options& opt
   const double flow_length = choose_parameter(get_parameter(np, internal_np::maximum_edge_length), 2. * h);
   Clock::time_point start;
   Flattened_poly_annuli flattened;
+  // Each patch compacted as soon as it is flattened, so that the flattening stage holds the full
+  // patches and flows of the patches in flight only; unless a visitor is to see them whole.
+  typedef std::function<void(const Extracted_patch&, const Conformal_flattening&)> Visitor;
+  const auto visit = choose_parameter(get_parameter(np, internal_np::flattened_patch_visitor), Visitor());
+  std::vector<Flattened_patch> patches;
+  Flattening_observer compact_as_flattened;
+  const bool visited = is_given(visit);
+  if(!visited)
+  {
+    compact_as_flattened.round_started = [&](std::size_t n) { patches.assign(n, Flattened_patch()); };
+    compact_as_flattened.patch_flattened = [&](std::size_t p, Extracted_patch& patch, Conformal_flattening& flattening) {
+      patches[p] = compacted(patch, flattening, h);
+    };
+  }
   const auto run = [&](const auto& segmentation_parameters) {
     start = Clock::now();
     progress("segmenting into poly-annuli");
@@ -103,7 +148,7 @@ void segment_and_flatten(const TriangleMesh& input, const Remeshing_options& opt
     start = Clock::now();
     flatten_poly_annuli<ConcurrencyTag>(result.segmentation, flattened,
                                         parameters::maximum_edge_length(flow_length, parameters::snap_distance(snap, np)),
-                                        time_limit, "remesh_conformal");
+                                        time_limit, "remesh_conformal", compact_as_flattened);
     statistics.seconds_flattening += std::chrono::duration<double>(Clock::now() - start).count();
     statistics.peak_resident_mb_flattening = peak_resident_megabytes();
   };
@@ -122,27 +167,20 @@ void segment_and_flatten(const TriangleMesh& input, const Remeshing_options& opt
              + report.features_fallback_reason + "): segmenting again without them");
     run(parameters::features_angle(0., parameters::snap_distance(snap, np)));
   }
-  add_flattening_statistics(result.segmentation, flattened, report, statistics);
-  const auto visit = choose_parameter(get_parameter(np, internal_np::flattened_patch_visitor),
-                                      [](const Extracted_patch&, const Conformal_flattening&) {});
-  for(std::size_t p = 0; p < flattened.patches.size(); ++p)
-    visit(flattened.patches[p], flattened.flattenings[p]);
-
-  std::vector<Flattened_patch> patches(flattened.patches.size());
-  for_each_index<ConcurrencyTag>(patches.size(), [&](std::size_t p) {
-    patches[p].patch = std::move(flattened.patches[p]);
-    patches[p].flattening = std::move(flattened.flattenings[p]);
-    patches[p].scale = local_scale(patches[p].flattening);
-    patches[p].tips = tip_candidates(patches[p].patch.mesh, h, kept_tip_tolerance);
-    // The meshing reads the tips, not the patch's mesh, and walks the flattening's triangles back
-    // to the patch without the final triangulation's connectivity or lengths.
-    patches[p].patch.mesh = Extracted_patch::Mesh();
-    patches[p].flattening.triangulation.keep_only_correspondence();
-  });
+  if(visited)
+  {
+    patches.assign(flattened.patches.size(), Flattened_patch());
+    for(std::size_t p = 0; p < patches.size(); ++p)
+    {
+      visit(flattened.patches[p], flattened.flattenings[p]);
+      patches[p] = compacted(flattened.patches[p], flattened.flattenings[p], h);
+    }
+  }
+  add_flattening_statistics(result.segmentation, flattened.bisections, patches, report, statistics);
   result.patches.clear();
   for(Flattened_patch& patch : patches)
     result.patches.push_back(std::make_shared<const Flattened_patch>(std::move(patch)));
-  release_free_memory(); // the patches' meshes and the flows' triangulations, held until here
+  release_free_memory(); // the patches' meshes and the flows' triangulations
 }
 
 } // namespace remeshing
