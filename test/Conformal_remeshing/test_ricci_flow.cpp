@@ -489,6 +489,56 @@ TEST(IntrinsicTriangulation, InvalidInputIsReported)
   catch(const CR::Error& e) { EXPECT_EQ(e.code(), CR::Error_code::INVALID_INPUT); }
 }
 
+// The first defect in face order is reported: an invalid index, a directed edge that repeats an
+// earlier one (non-manifold or misoriented), a non-positive length, an isolated vertex.
+TEST(IntrinsicTriangulation, TheFirstDefectOfTheFacesIsReported)
+{
+  typedef std::vector<std::array<int, 3>> Faces;
+  typedef std::vector<std::array<double, 3>> Lengths;
+  const auto build = [](int nv, const Faces& f, const Lengths& l) { return [=]() { Tri t(nv, f, l); }; };
+  const Lengths ones(3, {{1., 1., 1.}}), second_flat{{{1., 1., 1.}}, {{1., 0., 1.}}, {{1., 1., 1.}}};
+  // Faces 0 and 1 share edge (1, 2) in one direction: misoriented.
+  const Faces misoriented{{{0, 1, 2}}, {{1, 2, 3}}, {{2, 3, 4}}};
+  test_support::expect_error(build(5, misoriented, ones), CR::Error_code::INVALID_INPUT, {"edge (1, 2)", "inconsistently oriented"});
+  // Three faces on edge (0, 1): the third's (0, 1) repeats the first's.
+  const Faces fin{{{0, 1, 2}}, {{1, 0, 3}}, {{0, 1, 4}}};
+  test_support::expect_error(build(5, fin, ones), CR::Error_code::INVALID_INPUT, {"edge (0, 1)", "non-manifold"});
+  // A zero length on face 1 comes before the repeated edge of face 2, after that of face 1.
+  test_support::expect_error(build(5, fin, second_flat), CR::Error_code::INVALID_INPUT, {"face 1", "non-positive length"});
+  test_support::expect_error(build(5, misoriented, second_flat), CR::Error_code::INVALID_INPUT, {"edge (1, 2)"});
+  // An invalid index after a repeated edge, and before one.
+  test_support::expect_error(build(5, Faces{{{0, 1, 2}}, {{0, 1, 3}}, {{0, 9, 4}}}, ones), CR::Error_code::INVALID_INPUT, {"edge (0, 1)"});
+  test_support::expect_error(build(5, Faces{{{0, 1, 2}}, {{0, 0, 3}}, {{0, 1, 4}}}, ones), CR::Error_code::INVALID_INPUT,
+                             {"face 1", "invalid or repeated vertex index"});
+  test_support::expect_error(build(6, Faces{{{0, 1, 2}}, {{2, 1, 3}}, {{2, 3, 4}}}, ones), CR::Error_code::INVALID_INPUT,
+                             {"vertex 5 is isolated"});
+}
+
+// Each halfedge's twin is the halfedge the other way along its edge, around the high-degree
+// vertices of a fan too.
+TEST(IntrinsicTriangulation, TwinsJoinTheTwoSidesOfEachEdge)
+{
+  // A closed fan of 64 triangles around vertex 0, and a cap of 62 triangles on its rim.
+  std::vector<std::array<int, 3>> faces;
+  const int n = 64;
+  for(int i = 0; i < n; ++i)
+    faces.push_back({{0, 1 + i, 1 + (i + 1) % n}});
+  for(int i = 1; i + 1 < n; ++i)
+    faces.push_back({{1, 1 + (i + 1), 1 + i}});
+  const Tri t(n + 1, faces, std::vector<std::array<double, 3>>(faces.size(), {{1., 1., 1.}}));
+  EXPECT_EQ(t.euler_characteristic(), 2);
+  EXPECT_EQ(t.number_of_edges(), 3 * int(faces.size()) / 2);
+  for(int h = 0; h < t.number_of_halfedges(); ++h)
+  {
+    const int o = t.opposite(h);
+    ASSERT_GE(o, 0);
+    EXPECT_EQ(t.opposite(o), h);
+    EXPECT_EQ(t.edge(o), t.edge(h));
+    EXPECT_EQ(t.source(o), t.target(h));
+    EXPECT_EQ(t.target(o), t.source(h));
+  }
+}
+
 TEST(IntrinsicTriangulation, RicciEnergyGradientIsCurvatureError)
 {
   // The line search relies on dE/du = K - K_target: compare with central differences.

@@ -25,7 +25,7 @@
 #include <limits>
 #include <queue>
 #include <string>
-#include <unordered_map>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -957,6 +957,58 @@ private:
     return ma >= mb ? Face_location{r.face_a, ba} : Face_location{r.face_b, bb};
   }
 
+  // The twin of each of the halfedges `0, ..., count - 1` (-1 on a border), given their vertices
+  // (valid indices), found by bucketing them by their smaller vertex and sorting each bucket by
+  // the other one (far faster than a hash map of directed edges on a large mesh, and in place of
+  // one). `repeated` receives the first halfedge whose directed edge is that of an earlier one, or
+  // `count` if there is none: the connectivity is then non-manifold or inconsistently oriented
+  // (three or more halfedges on one edge always repeat a direction).
+  static std::vector<int> twins_of_halfedges(const std::vector<int>& he_vertex, int count, int number_of_vertices,
+                                             int& repeated)
+  {
+    const auto source = [&](int h) { return he_vertex[h]; };
+    const auto target = [&](int h) { return he_vertex[next(h)]; };
+    std::vector<int> start(number_of_vertices + 1, 0);
+    for(int h = 0; h < count; ++h)
+      ++start[(std::min)(source(h), target(h)) + 1];
+    for(int v = 0; v < number_of_vertices; ++v)
+      start[v + 1] += start[v];
+    std::vector<int> bucketed(count);
+    {
+      std::vector<int> fill(start.begin(), start.end() - 1);
+      for(int h = 0; h < count; ++h)
+        bucketed[fill[(std::min)(source(h), target(h))]++] = h;
+    }
+    std::vector<int> twin(count, -1);
+    repeated = count;
+    for(int v = 0; v < number_of_vertices; ++v)
+    {
+      const auto first = bucketed.begin() + start[v], last = bucketed.begin() + start[v + 1];
+      // By the other vertex, then by direction (from `v` first), then in order.
+      const auto order = [&](int h) { return std::make_tuple((std::max)(source(h), target(h)), source(h) != v, h); };
+      std::sort(first, last, [&](int g, int h) { return order(g) < order(h); });
+      for(auto i = first; i != last;)
+      {
+        auto j = i;
+        while(j != last && (std::max)(source(*j), target(*j)) == (std::max)(source(*i), target(*i)))
+          ++j;
+        // [i, j): the halfedges of one edge, those leaving `v` first, each direction in order.
+        const auto split = std::find_if(i, j, [&](int h) { return source(h) != v; });
+        if(split - i > 1)
+          repeated = (std::min)(repeated, *(i + 1));
+        if(j - split > 1)
+          repeated = (std::min)(repeated, *(split + 1));
+        if(split - i == 1 && j - split == 1)
+        {
+          twin[*i] = *split;
+          twin[*split] = *i;
+        }
+        i = j;
+      }
+    }
+    return twin;
+  }
+
   void init(std::size_t number_of_vertices,
             const std::vector<std::array<int, 3>>& faces,
             const std::vector<std::array<FT, 3>>& lengths)
@@ -972,26 +1024,41 @@ private:
     he_edge_.assign(3 * nf, -1);
     edge_he_.clear();
     length_.clear();
-    std::vector<char> used(nv_, 0);
-    std::unordered_map<std::uint64_t, int> directed;
-    directed.reserve(3 * nf);
-    auto key = [](int a, int b) { return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b); };
+    // The first halfedge, in face order, with an invalid or repeated vertex index, and the first
+    // with a non-positive length; the halfedges before the first are checked for a repeated
+    // directed edge. The first of the three in face order is reported (at one halfedge, in this
+    // order).
     for(int f = 0; f < nf; ++f)
+      for(int c = 0; c < 3; ++c)
+        he_vertex_[3 * f + c] = faces[f][c];
+    int invalid = 3 * nf, non_positive = 3 * nf;
+    for(int f = 0; f < nf && invalid == 3 * nf; ++f)
       for(int c = 0; c < 3; ++c)
       {
         const int a = faces[f][c], b = faces[f][(c + 1) % 3];
         if(a < 0 || a >= nv_ || b < 0 || b >= nv_ || a == b)
-          throw Error(Error_code::INVALID_INPUT, "Intrinsic_triangulation: face " + std::to_string(f) +
-                                                     " has an invalid or repeated vertex index.");
-        used[a] = 1;
-        he_vertex_[3 * f + c] = a;
-        if(!directed.emplace(key(a, b), 3 * f + c).second)
-          throw Error(Error_code::INVALID_INPUT, "Intrinsic_triangulation: edge (" + std::to_string(a) + ", " +
-                                                     std::to_string(b) + ") is non-manifold or faces are inconsistently oriented.");
-        if(!(lengths[f][c] > FT(0)))
-          throw Error(Error_code::INVALID_INPUT, "Intrinsic_triangulation: face " + std::to_string(f) +
-                                                     " has an edge of non-positive length.");
+        {
+          invalid = 3 * f + c;
+          break;
+        }
+        if(!(lengths[f][c] > FT(0)) && non_positive == 3 * nf)
+          non_positive = 3 * f + c;
       }
+    int repeated = invalid; // the halfedges before `invalid` have valid vertices at both ends
+    const std::vector<int> twin = twins_of_halfedges(he_vertex_, invalid, nv_, repeated);
+    if(repeated < invalid && repeated <= non_positive)
+      throw Error(Error_code::INVALID_INPUT, "Intrinsic_triangulation: edge (" + std::to_string(he_vertex_[repeated]) +
+                                                 ", " + std::to_string(he_vertex_[next(repeated)]) +
+                                                 ") is non-manifold or faces are inconsistently oriented.");
+    if(non_positive < invalid)
+      throw Error(Error_code::INVALID_INPUT, "Intrinsic_triangulation: face " + std::to_string(non_positive / 3) +
+                                                 " has an edge of non-positive length.");
+    if(invalid < 3 * nf)
+      throw Error(Error_code::INVALID_INPUT, "Intrinsic_triangulation: face " + std::to_string(invalid / 3) +
+                                                 " has an invalid or repeated vertex index.");
+    std::vector<char> used(nv_, 0);
+    for(int a : he_vertex_)
+      used[a] = 1;
     for(int v = 0; v < nv_; ++v)
       if(!used[v])
         throw Error(Error_code::INVALID_INPUT, "Intrinsic_triangulation: vertex " + std::to_string(v) + " is isolated.");
@@ -1001,18 +1068,17 @@ private:
       if(he_edge_[h] >= 0)
         continue;
       const int a = he_vertex_[h], b = he_vertex_[next(h)];
-      auto it = directed.find(key(b, a));
       const int e = static_cast<int>(edge_he_.size());
       edge_he_.push_back(h);
       he_edge_[h] = e;
       const FT lh = lengths[h / 3][h % 3];
       length_.push_back(lh);
-      if(it == directed.end())
+      const int t = twin[h];
+      if(t < 0)
       {
         vertex_on_border_[a] = vertex_on_border_[b] = 1;
         continue;
       }
-      const int t = it->second;
       using std::abs;
       const FT lt = lengths[t / 3][t % 3];
       if(abs(lh - lt) > FT(1e-9) * (lh > lt ? lh : lt))
