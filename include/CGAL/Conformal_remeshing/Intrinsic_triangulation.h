@@ -959,8 +959,8 @@ private:
 
   // The twin of each of the halfedges `0, ..., count - 1` (-1 on a border), given their vertices
   // (valid indices), found by bucketing them by their smaller vertex and sorting each bucket by
-  // the other one (far faster than a hash map of directed edges on a large mesh, and in place of
-  // one). `repeated` receives the first halfedge whose directed edge is that of an earlier one, or
+  // the other one (on a large mesh a hash map of directed edges spends its time missing the
+  // cache). `repeated` receives the first halfedge whose directed edge is that of an earlier one, or
   // `count` if there is none: the connectivity is then non-manifold or inconsistently oriented
   // (three or more halfedges on one edge always repeat a direction).
   static std::vector<int> twins_of_halfedges(const std::vector<int>& he_vertex, int count, int number_of_vertices,

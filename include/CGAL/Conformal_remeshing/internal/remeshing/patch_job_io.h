@@ -4,10 +4,9 @@
 // Patch jobs and their results as bytes, so that another process can run a job (the MPI tool,
 // remesh_conformal_mpi): `mesh_patch()` on a job read back from its bytes gives the result it
 // gives on the original, bit for bit, because every number is copied as it is in memory and
-// every container keeps its order. The bytes are
-// those of this machine's layout: writer and reader must be the same build on the same kind of
-// machine, as the ranks of one MPI run are. A job with a user sizing field (a function) cannot be
-// written.
+// every container keeps its order. The bytes are those of this machine's layout: writer and
+// reader must be the same build on the same kind of machine, as the ranks of one MPI run are. A
+// job with a user sizing field (a function) cannot be written.
 //
 // The flattened surface of a patch is most of a job's bytes and the same in every job of that
 // patch: `write_patch_job()` leaves it out when asked, and `read_patch_job()` then takes it from
