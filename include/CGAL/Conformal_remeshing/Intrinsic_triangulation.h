@@ -21,7 +21,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cstdint>
 #include <limits>
 #include <queue>
 #include <string>
