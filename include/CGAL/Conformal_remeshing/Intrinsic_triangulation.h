@@ -967,6 +967,7 @@ private:
   {
     const auto source = [&](int h) { return he_vertex[h]; };
     const auto target = [&](int h) { return he_vertex[next(h)]; };
+    const auto other_end = [&](int h) { return (std::max)(source(h), target(h)); }; // in its bucket
     std::vector<int> start(number_of_vertices + 1, 0);
     for(int h = 0; h < count; ++h)
       ++start[(std::min)(source(h), target(h)) + 1];
@@ -984,12 +985,13 @@ private:
     {
       const auto first = bucketed.begin() + start[v], last = bucketed.begin() + start[v + 1];
       // By the other vertex, then by direction (from `v` first), then in order.
-      const auto order = [&](int h) { return std::make_tuple((std::max)(source(h), target(h)), source(h) != v, h); };
+      const auto order = [&](int h) { return std::make_tuple(other_end(h), source(h) != v, h); };
       std::sort(first, last, [&](int g, int h) { return order(g) < order(h); });
       for(auto i = first; i != last;)
       {
+        const int w = other_end(*i);
         auto j = i;
-        while(j != last && (std::max)(source(*j), target(*j)) == (std::max)(source(*i), target(*i)))
+        while(j != last && other_end(*j) == w)
           ++j;
         // [i, j): the halfedges of one edge, those leaving `v` first, each direction in order.
         const auto split = std::find_if(i, j, [&](int h) { return source(h) != v; });
