@@ -22,6 +22,7 @@
 #include <cmath>
 #include <complex>
 #include <iostream>
+#include <limits>
 #include <map>
 #include <random>
 #include <set>
@@ -539,6 +540,38 @@ TEST(IntrinsicTriangulation, TwinsJoinTheTwoSidesOfEachEdge)
   }
 }
 
+TEST(IntrinsicTriangulation, OnePassGivesTheAngleSumsAndTheEnergyOfEachFace)
+{
+  // A line search's trial takes the energy and the angle sums from one pass over the faces:
+  // the angle sums must be the triangulation's own, bit for bit, and the energy the sum of
+  // each face's terms.
+  Soup s = cad_sliver_disc(4, 9, 0.4, 0.2);
+  Tri t = from_soup(s);
+  t.make_delaunay();
+  double face_energy = 0.;
+  std::vector<double> sums;
+  ASSERT_TRUE(CR::internal::ricci_flow::face_energy_and_angle_sums(t, face_energy, sums));
+  EXPECT_EQ(sums, t.angle_sums());
+  double expected = 0.;
+  for(int f = 0; f < t.number_of_faces(); ++f)
+    for(int c = 0; c < 3; ++c)
+    {
+      const double theta = t.corner_angle(f, c), opposite = t.face_lengths(f)[(c + 1) % 3];
+      expected += (theta - pi / 2) * std::log(opposite) + CR::internal::ricci_flow::lobachevsky(theta);
+    }
+  EXPECT_NEAR(face_energy, expected, 1e-12 * (1. + std::abs(expected)));
+
+  // A face that violates the triangle inequality: no energy, no angle sums.
+  std::vector<double> lengths = t.edge_lengths();
+  const int e = t.edge(0, 0);
+  lengths[e] = 2. * (t.face_lengths(0)[1] + t.face_lengths(0)[2]);
+  t.set_edge_lengths(lengths);
+  EXPECT_FALSE(CR::internal::ricci_flow::face_energy_and_angle_sums(t, face_energy, sums));
+  EXPECT_EQ(CR::internal::ricci_flow::ricci_energy(t, std::vector<double>(t.number_of_vertices(), 0.),
+                                                   std::vector<double>(t.number_of_vertices(), 0.)),
+            std::numeric_limits<double>::infinity());
+}
+
 TEST(IntrinsicTriangulation, RicciEnergyGradientIsCurvatureError)
 {
   // The line search relies on dE/du = K - K_target: compare with central differences.
@@ -557,7 +590,7 @@ TEST(IntrinsicTriangulation, RicciEnergyGradientIsCurvatureError)
     u[v] = h;
     Tri copy = t;
     copy.scale_vertices(u);
-    return CR::internal::ricci_flow::ricci_energy(copy, copy.edge_lengths(), theta, u);
+    return CR::internal::ricci_flow::ricci_energy(copy, theta, u);
   };
   for(int v = 0; v < nv; v += 3)
   {

@@ -96,33 +96,84 @@ namespace ricci_flow {
 template <typename T> struct Unwrap { typedef T type; };
 template <typename T> struct Unwrap<std::reference_wrapper<T>> { typedef typename std::remove_const<T>::type type; };
 
-// The Ricci energy of the fixed triangulation `tri` at lengths `l` (convex in the conformal
-// factors; its gradient is K - K̄, its Hessian the cotangent matrix). Up to a constant:
+// The Ricci energy of the fixed triangulation `tri` (convex in the conformal factors; its
+// gradient is K - K̄, its Hessian the cotangent matrix). Up to a constant:
 //   E = sum_faces sum_corners [ (theta - pi/2) log l_opposite + Lob(theta) ] + sum_v Theta_v u_v
-// with Theta_v the target angle sum. Evaluated in double: it only decides whether a step is
-// accepted, and near convergence the gradient test takes over.
+// with Theta_v the target angle sum. It is evaluated in double: it only decides whether a step
+// is accepted, and near convergence the gradient test takes over.
+//
+// The sum over the faces at the lengths of `tri`, and from the same half-angle tangents the
+// angle sum at every vertex (in FT): a line search's trial needs both, and the tangents, their
+// arctangents and the checks of the triangle inequality are the larger part of either.
+// Returns false if a face violates the triangle inequality. With FT other than double the
+// energy's terms are those of the lengths rounded to double, and the energy is infinite if
+// those violate it.
 template <typename FT>
-double ricci_energy(const Intrinsic_triangulation<FT>& tri, const std::vector<FT>& l,
-                    const std::vector<double>& target_angle_sum, const std::vector<double>& u)
+bool face_energy_and_angle_sums(const Intrinsic_triangulation<FT>& tri, double& face_energy,
+                                std::vector<FT>& angle_sums)
 {
   const double half_pi = 1.5707963267948966;
-  double e = 0;
-  std::array<double, 3> len, t;
+  face_energy = 0;
+  angle_sums.assign(tri.number_of_vertices(), FT(0));
+  std::array<FT, 3> opposite, t;
+  std::array<double, 3> len, t_double;
+  bool energy_defined = true;
   for(int f = 0; f < tri.number_of_faces(); ++f)
   {
+    const std::array<FT, 3> sides = tri.face_lengths(f); // side c joins corners c and c + 1
     for(int c = 0; c < 3; ++c)
-      len[c] = static_cast<double>(l[tri.edge(Intrinsic_triangulation<FT>::halfedge(f, (c + 1) % 3))]);
-    if(!half_angle_tangents(len, t))
-      return std::numeric_limits<double>::infinity();
+      opposite[c] = sides[(c + 1) % 3];
+    if(!half_angle_tangents(opposite, t))
+      return false;
+    if constexpr(std::is_same<FT, double>::value)
+    {
+      len = opposite;
+      t_double = t;
+    }
+    else
+    {
+      for(int c = 0; c < 3; ++c)
+        len[c] = static_cast<double>(opposite[c]);
+      if(!half_angle_tangents(len, t_double))
+        energy_defined = false;
+    }
     for(int c = 0; c < 3; ++c)
     {
-      const double theta = 2. * std::atan(t[c]);
-      e += (theta - half_pi) * std::log(len[c]) + lobachevsky(theta);
+      const FT theta = angle_from_half_tangent(t[c]);
+      angle_sums[tri.vertex(f, c)] += theta;
+      double theta_double;
+      if constexpr(std::is_same<FT, double>::value)
+        theta_double = theta;
+      else
+        theta_double = 2. * std::atan(t_double[c]);
+      if(energy_defined)
+        face_energy += (theta_double - half_pi) * std::log(len[c]) + lobachevsky(theta_double);
     }
   }
+  if(!energy_defined)
+    face_energy = std::numeric_limits<double>::infinity();
+  return true;
+}
+
+// The Ricci energy from the sum over the faces and the conformal factors `u` of the vertices.
+inline double ricci_energy(double face_energy, const std::vector<double>& target_angle_sum, const std::vector<double>& u)
+{
+  double e = face_energy;
   for(std::size_t v = 0; v < u.size(); ++v)
     e += target_angle_sum[v] * u[v];
   return e;
+}
+
+// The Ricci energy of `tri` at its lengths; infinite if a face violates the triangle inequality.
+template <typename FT>
+double ricci_energy(const Intrinsic_triangulation<FT>& tri, const std::vector<double>& target_angle_sum,
+                    const std::vector<double>& u)
+{
+  double face_energy;
+  std::vector<FT> angle_sums;
+  if(!face_energy_and_angle_sums(tri, face_energy, angle_sums))
+    return std::numeric_limits<double>::infinity();
+  return ricci_energy(face_energy, target_angle_sum, u);
 }
 
 // The named parameters of `discrete_ricci_flow()` (see there), read once with their defaults;
@@ -278,23 +329,23 @@ private:
       target_angle_sum_[v] = static_cast<double>((tri_.is_border_vertex(int(v)) ? pi_ : FT(2) * pi_) - target_[v]);
   }
 
-  // g = K - K̄ of the triangulation T; returns max |g|
-  FT residual_on(const Intrinsic_triangulation<FT>& T, std::vector<FT>& g) const
+  // g = K - K̄ of the triangulation T from its angle sums; returns max |g|
+  FT residual_on(const Intrinsic_triangulation<FT>& T, const std::vector<FT>& angle_sums, std::vector<FT>& g) const
   {
     using std::abs;
-    const std::vector<FT> k = T.vertex_curvatures();
-    g.resize(k.size());
+    g.resize(angle_sums.size());
     FT m(0);
-    for(std::size_t v = 0; v < k.size(); ++v)
+    for(std::size_t v = 0; v < angle_sums.size(); ++v)
     {
-      g[v] = k[v] - target_[v];
+      const FT curvature = (T.is_border_vertex(int(v)) ? pi_ : FT(2) * pi_) - angle_sums[v];
+      g[v] = curvature - target_[v];
       if(abs(g[v]) > m)
         m = abs(g[v]);
     }
     return m;
   }
 
-  FT residual(std::vector<FT>& g) const { return residual_on(tri_, g); }
+  FT residual(std::vector<FT>& g) const { return residual_on(tri_, tri_.angle_sums(), g); }
 
   // --- Delaunay restoration: flips and edge splits ------------------------------------------------
 
@@ -370,8 +421,10 @@ private:
   // splits added vertices.
   void restore_delaunay_after_step()
   {
-    const std::size_t before = tri_.number_of_vertices();
+    const std::size_t before = tri_.number_of_vertices(), flips_before = result_.number_of_flips;
     restore_delaunay();
+    if(result_.number_of_flips != flips_before || static_cast<std::size_t>(tri_.number_of_vertices()) != before)
+      face_energy_known_ = false;
     if(static_cast<std::size_t>(tri_.number_of_vertices()) != before)
     {
       // New vertices: the residual changes (Euclidean flips alone keep it).
@@ -616,7 +669,11 @@ private:
     const std::vector<FT> l0 = tri_.edge_lengths();
     zero_.assign(nv, 0.);
     trial_u_.resize(nv);
-    const double e0 = ricci_energy(tri_, l0, target_angle_sum_, zero_);
+    // The energy at the start is that of the last accepted trial when no flip or split has
+    // changed the triangulation since.
+    const double e0 = face_energy_known_ ? ricci_energy(face_energy_, target_angle_sum_, zero_)
+                                         : ricci_energy(tri_, target_angle_sum_, zero_);
+    face_energy_known_ = false;
     double slope = 0; // directional derivative of the energy: g . d < 0
     FT gnorm2(0);
     for(int v = 0; v < nv; ++v)
@@ -651,14 +708,18 @@ private:
       else
         set_trial_lengths(l0, step);
       const Intrinsic_triangulation<FT>& current = on_path ? path_.triangulation() : tri_;
-      if(!current.is_valid())
-        continue;
+      double face_energy;
+      if(!face_energy_and_angle_sums(current, face_energy, trial_angle_sums_))
+        continue; // a face violates the triangle inequality
       FT trial_error;
-      if(is_acceptable(current, nv, step, e0, slope, gnorm2, trial_error))
+      if(is_acceptable(current, nv, step, face_energy, e0, slope, gnorm2, trial_error))
       {
         accept_step(nv, step, trial_error, l0, on_path);
         accepted = true;
         accepted_step = step;
+        // On the path, `tri_` gets the step by a replay of the flips, not these very lengths.
+        face_energy_known_ = !on_path;
+        face_energy_ = face_energy;
       }
     }
     // Replay the explored flips on `tri_`; `l_` is free again and holds the replay's bases.
@@ -683,16 +744,17 @@ private:
   }
 
   // Whether the trial metric `current`, at `step` along d, is accepted: the Armijo test on the
-  // energy (`e0` at the start, `slope` its directional derivative), or near convergence a lower
-  // residual norm than `gnorm2`. The trial's residual goes to `g_trial_`, its max to `trial_error`.
-  bool is_acceptable(const Intrinsic_triangulation<FT>& current, int nv, const FT& step, double e0, double slope,
-                     const FT& gnorm2, FT& trial_error)
+  // energy (`e0` at the start, `slope` its directional derivative; `face_energy` and
+  // `trial_angle_sums_` are those of the trial), or near convergence a lower residual norm than
+  // `gnorm2`. The trial's residual goes to `g_trial_`, its max to `trial_error`.
+  bool is_acceptable(const Intrinsic_triangulation<FT>& current, int nv, const FT& step, double face_energy,
+                     double e0, double slope, const FT& gnorm2, FT& trial_error)
   {
     for(int v = 0; v < nv; ++v)
       trial_u_[v] = static_cast<double>(step * d_[v]);
-    const double e1 = ricci_energy(current, current.edge_lengths(), target_angle_sum_, trial_u_);
+    const double e1 = ricci_energy(face_energy, target_angle_sum_, trial_u_);
     const bool armijo = e1 <= e0 + 1e-4 * static_cast<double>(step) * slope;
-    trial_error = residual_on(current, g_trial_);
+    trial_error = residual_on(current, trial_angle_sums_, g_trial_);
     FT trial_norm2(0);
     for(int v = 0; v < nv; ++v)
       trial_norm2 += g_trial_[v] * g_trial_[v];
@@ -741,6 +803,9 @@ private:
   int analyzed_size_ = -1, factorized_size_ = -1;
   std::vector<FT> g_, g_trial_, d_, l_; // residual K - K̄, that of a trial, Newton direction, trial lengths
   std::vector<double> zero_, trial_u_;
+  std::vector<FT> trial_angle_sums_;
+  double face_energy_ = 0; // the Ricci energy's sum over the faces of `tri_`, when known
+  bool face_energy_known_ = false;
   FT error_;
   Conformal_path<FT> path_; // the line search with exact_conformal_path
 
