@@ -23,17 +23,22 @@
 #include <CGAL/Delaunay_mesher_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Simple_cartesian.h>
+#include <CGAL/Spatial_sort_traits_adapter_2.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
+#include <CGAL/property_map.h>
+#include <CGAL/spatial_sort.h>
 #include <CGAL/tags.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <numeric>
 #include <vector>
 
 namespace CGAL {
@@ -58,6 +63,43 @@ struct Region_cover
   std::vector<Point_3> added;
   std::vector<std::array<std::int64_t, 3> > triangles;
 };
+
+// Inserts the sides of `region`'s outline into `cdt` as constraints, their ends projected by
+// `project` (a mesh vertex to a `CDT::Point`) and recorded in their `info().value`. The ends are
+// inserted first, in spatial order: the outline's sides come in the order the region grew, and
+// on a planar CAD face of a large part (a fan of 100k slivers and more) locating each end from
+// the previous side's walks across the face.
+template <typename CDT, typename Project>
+void insert_outline(const Coplanar_region& region, const Project& project, CDT& cdt)
+{
+  typedef typename CDT::Geom_traits K;
+  typedef typename CDT::Point Point_2;
+  std::vector<int> ends; // the outline's vertices, sorted
+  ends.reserve(2 * region.outline.size());
+  for(const std::array<int, 2>& side : region.outline)
+    ends.insert(ends.end(), side.begin(), side.end());
+  std::sort(ends.begin(), ends.end());
+  ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
+  std::vector<Point_2> projected;
+  projected.reserve(ends.size());
+  for(int v : ends)
+    projected.push_back(project(v));
+  std::vector<std::size_t> order(ends.size());
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  const auto point_of_index = CGAL::make_property_map(projected);
+  CGAL::spatial_sort(order.begin(), order.end(), CGAL::Spatial_sort_traits_adapter_2<K, decltype(point_of_index)>(point_of_index));
+  std::vector<typename CDT::Vertex_handle> vertex(ends.size());
+  typename CDT::Face_handle hint;
+  for(std::size_t i : order)
+  {
+    vertex[i] = cdt.insert(projected[i], hint);
+    vertex[i]->info().value = ends[i];
+    hint = vertex[i]->face();
+  }
+  const auto vertex_of = [&](int v) { return vertex[std::size_t(std::lower_bound(ends.begin(), ends.end(), v) - ends.begin())]; };
+  for(const std::array<int, 2>& side : region.outline)
+    cdt.insert_constraint(vertex_of(side[0]), vertex_of(side[1]));
+}
 
 // A constrained Delaunay triangulation of `region`'s outline refined by CGAL's Delaunay mesher
 // towards smallest angles of about 20 degrees (no size bound: few points where the outline is
@@ -101,13 +143,7 @@ inline bool retriangulate(const Coplanar_region& region, const std::vector<Point
   for(const auto& f : region.faces)
     area += std::abs(CGAL::area(project(points[f[0]]), project(points[f[1]]), project(points[f[2]])));
   CDT cdt;
-  for(const auto& s : region.outline)
-  {
-    const auto a = cdt.insert(project(points[s[0]])), b = cdt.insert(project(points[s[1]]), a->face());
-    a->info().value = s[0];
-    b->info().value = s[1];
-    cdt.insert_constraint(a, b);
-  }
+  insert_outline(region, [&](int v) { return project(points[v]); }, cdt);
   // The region is the faces an odd number of sides away from the outside.
   mark_constraint_depth(cdt);
   for(auto f : cdt.all_face_handles())
