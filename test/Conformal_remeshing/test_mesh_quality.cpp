@@ -338,6 +338,48 @@ TEST(ReferenceComparison, CoverOfACadPlateIsItsSurfaceWithoutTheFans)
     EXPECT_NEAR(distance_to(cover, q), distance_to(faces, q), 1e-9 * c.reference_diagonal) << q;
 }
 
+TEST(ReferenceComparison, CoverDoesNotDependOnTheOrderOfTheFaces)
+{
+  // A planar region's outline comes in the order the region grew from its first face; the
+  // triangulation of that outline must not depend on it. The plate's faces listed backwards
+  // give the same covered area and the same closest distances.
+  Mesh plate;
+  CGAL::Conformal_remeshing::benchmarks::make_perforated_plate(plate, CGAL::Conformal_remeshing::benchmarks::Perforated_plate_parameters());
+  Mesh backwards;
+  std::vector<Mesh::Vertex_index> vertex_of;
+  for(Mesh::Vertex_index v : plate.vertices())
+    vertex_of.push_back(backwards.add_vertex(plate.point(v)));
+  std::vector<Mesh::Face_index> faces(plate.faces().begin(), plate.faces().end());
+  for(auto f = faces.rbegin(); f != faces.rend(); ++f)
+  {
+    std::vector<Mesh::Vertex_index> corners;
+    for(Mesh::Vertex_index v : CGAL::vertices_around_face(plate.halfedge(*f), plate))
+      corners.push_back(vertex_of[std::size_t(v)]);
+    ASSERT_TRUE(backwards.add_face(corners) != Mesh::null_face());
+  }
+  typedef CGAL::Simple_cartesian<double> Fast;
+  const std::vector<Fast::Triangle_3> forward_cover = CR::internal::well_shaped_cover(plate);
+  const std::vector<Fast::Triangle_3> backward_cover = CR::internal::well_shaped_cover(backwards);
+  const auto area = [](const std::vector<Fast::Triangle_3>& triangles) {
+    double a = 0.;
+    for(const Fast::Triangle_3& t : triangles)
+      a += std::sqrt(t.squared_area());
+    return a;
+  };
+  const double plate_area = CGAL::Polygon_mesh_processing::area(plate);
+  EXPECT_NEAR(area(forward_cover), plate_area, 1e-9 * plate_area);
+  EXPECT_NEAR(area(backward_cover), plate_area, 1e-9 * plate_area);
+  const CR::internal::Distance_to_surface forward(plate), backward(backwards);
+  std::vector<Fast::Point_3> queries = CR::internal::sample_points(plate, 200, 5);
+  CGAL::Random random(13);
+  for(int i = 0; i < 300; ++i)
+    queries.emplace_back(random.get_double(-70., 70.), random.get_double(-50., 50.), random.get_double(-8., 8.));
+  const std::vector<double> d_forward = forward.squared_distances<CGAL::Sequential_tag>(queries);
+  const std::vector<double> d_backward = backward.squared_distances<CGAL::Sequential_tag>(queries);
+  for(std::size_t i = 0; i < queries.size(); ++i)
+    EXPECT_NEAR(std::sqrt(d_forward[i]), std::sqrt(d_backward[i]), 1e-9) << queries[i];
+}
+
 TEST(ReferenceComparison, CoverBuiltInParallelIsTheSameTriangleForTriangle)
 {
   // Regions are retriangulated in parallel but appended in the order they are found: the

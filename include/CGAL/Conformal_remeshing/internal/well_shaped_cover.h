@@ -67,8 +67,8 @@ struct Region_cover
 // Inserts the sides of `region`'s outline into `cdt` as constraints, their ends projected by
 // `project` (a mesh vertex to a `CDT::Point`) and recorded in their `info().value`. The ends are
 // inserted first, in spatial order: the outline's sides come in the order the region grew, and
-// on a planar CAD face of a large part (a fan of 100k slivers and more) locating each end from
-// the previous side's walks across the face.
+// on a planar CAD face of a large part (a fan of 100k slivers and more) a walk from one side's
+// end to the next side's would cross the face.
 template <typename CDT, typename Project>
 void insert_outline(const Coplanar_region& region, const Project& project, CDT& cdt)
 {
