@@ -23,13 +23,10 @@
 #include <CGAL/Delaunay_mesher_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Simple_cartesian.h>
-#include <CGAL/Spatial_sort_traits_adapter_2.h>
 #include <CGAL/Triangulation_face_base_with_info_2.h>
 #include <CGAL/Triangulation_vertex_base_with_info_2.h>
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
-#include <CGAL/property_map.h>
-#include <CGAL/spatial_sort.h>
 #include <CGAL/tags.h>
 
 #include <algorithm>
@@ -38,7 +35,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
-#include <numeric>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -66,39 +63,37 @@ struct Region_cover
 
 // Inserts the sides of `region`'s outline into `cdt` as constraints, their ends projected by
 // `project` (a mesh vertex to a `CDT::Point`) and recorded in their `info().value`. The ends are
-// inserted first, in spatial order: the outline's sides come in the order the region grew, and
-// on a planar CAD face of a large part (a fan of 100k slivers and more) a walk from one side's
-// end to the next side's would cross the face.
+// inserted first as one range, which CGAL sorts spatially: the outline's sides come in the order
+// the region grew, and on a planar CAD face of a large part (a fan of 100k slivers and more) a
+// walk from one side's end to the next side's would cross the face.
 template <typename CDT, typename Project>
 void insert_outline(const Coplanar_region& region, const Project& project, CDT& cdt)
 {
-  typedef typename CDT::Geom_traits K;
-  typedef typename CDT::Point Point_2;
+  typedef typename CDT::Vertex::Info Info;
   std::vector<int> ends; // the outline's vertices, sorted
   ends.reserve(2 * region.outline.size());
   for(const std::array<int, 2>& side : region.outline)
     ends.insert(ends.end(), side.begin(), side.end());
   std::sort(ends.begin(), ends.end());
   ends.erase(std::unique(ends.begin(), ends.end()), ends.end());
-  std::vector<Point_2> projected;
-  projected.reserve(ends.size());
+  std::vector<std::pair<typename CDT::Point, Info> > located;
+  located.reserve(ends.size());
   for(int v : ends)
-    projected.push_back(project(v));
-  std::vector<std::size_t> order(ends.size());
-  std::iota(order.begin(), order.end(), std::size_t(0));
-  const auto point_of_index = CGAL::make_property_map(projected);
-  CGAL::spatial_sort(order.begin(), order.end(), CGAL::Spatial_sort_traits_adapter_2<K, decltype(point_of_index)>(point_of_index));
-  std::vector<typename CDT::Vertex_handle> vertex(ends.size());
-  typename CDT::Face_handle hint;
-  for(std::size_t i : order)
   {
-    vertex[i] = cdt.insert(projected[i], hint);
-    vertex[i]->info().value = ends[i];
-    hint = vertex[i]->face();
+    Info info;
+    info.value = v;
+    located.emplace_back(project(v), info);
   }
-  const auto vertex_of = [&](int v) { return vertex[std::size_t(std::lower_bound(ends.begin(), ends.end(), v) - ends.begin())]; };
+  cdt.insert(located.begin(), located.end());
+  const auto position = [&](int v) { return std::size_t(std::lower_bound(ends.begin(), ends.end(), v) - ends.begin()); };
+  std::vector<typename CDT::Vertex_handle> vertex(ends.size());
+  for(auto v : cdt.finite_vertex_handles())
+    vertex[position(v->info().value)] = v;
+  for(std::size_t i = 0; i < ends.size(); ++i)
+    if(vertex[i] == typename CDT::Vertex_handle()) // at the point of another end: its vertex
+      vertex[i] = cdt.insert(located[i].first);
   for(const std::array<int, 2>& side : region.outline)
-    cdt.insert_constraint(vertex_of(side[0]), vertex_of(side[1]));
+    cdt.insert_constraint(vertex[position(side[0])], vertex[position(side[1])]);
 }
 
 // A constrained Delaunay triangulation of `region`'s outline refined by CGAL's Delaunay mesher
